@@ -1,0 +1,79 @@
+//! The pinhole camera of the course: one ray from the eye through each pixel.
+
+use crate::math::{Real, Vec3};
+use crate::ray::Ray;
+
+/// A pinhole camera at `position`, looking down `-z` with `y` up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    /// The eye: where every camera ray starts.
+    pub position: Vec3,
+    /// The vertical field of view, in radians.
+    pub fov: Real,
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+}
+
+impl Camera {
+    // ANCHOR: pixel_direction
+    /// The (unnormalised) direction through the centre of pixel (`row`, `column`),
+    /// rows counted from the top of the image. With `i = H - 1 - row` the row counted
+    /// from the bottom, as in the course:
+    /// `(j - W/2 + 0.5, i - H/2 + 0.5, -H / (2 tan(fov/2)))`.
+    /// The image plane sits at the distance where `H` pixels span the field of view.
+    pub fn pixel_direction(&self, row: u32, column: u32) -> Vec3 {
+        let (w, h) = (self.width as Real, self.height as Real);
+        let i = (self.height - 1 - row) as Real;
+        let j = column as Real;
+        Vec3::new(
+            j - w / 2.0 + 0.5,
+            i - h / 2.0 + 0.5,
+            -h / (2.0 * (self.fov / 2.0).tan()),
+        )
+    }
+    // ANCHOR_END: pixel_direction
+
+    /// The camera ray through the centre of pixel (`row`, `column`).
+    pub fn primary_ray(&self, row: u32, column: u32) -> Ray {
+        Ray::new(self.position, self.pixel_direction(row, column))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn camera() -> Camera {
+        Camera {
+            position: Vec3::new(0.0, 0.0, 55.0),
+            fov: (60.0 as Real).to_radians(),
+            width: 512,
+            height: 256,
+        }
+    }
+
+    #[test]
+    fn centre_pixels_straddle_the_axis() {
+        let c = camera();
+        let d = c.pixel_direction(127, 255);
+        assert_eq!((d.x, d.y), (-0.5, 0.5));
+        let d = c.pixel_direction(128, 256);
+        assert_eq!((d.x, d.y), (0.5, -0.5));
+    }
+
+    #[test]
+    fn top_and_bottom_rows_span_the_field_of_view() {
+        let c = camera();
+        let top = c.pixel_direction(0, 256).normalize();
+        let bottom = c.pixel_direction(255, 256).normalize();
+        let angle = top.angle_between(bottom);
+        let one_pixel = c.fov / c.height as Real;
+        assert!((angle - c.fov).abs() < one_pixel, "{angle} vs {}", c.fov);
+        assert!(
+            top.y > 0.0 && bottom.y < 0.0,
+            "rows are counted from the top"
+        );
+    }
+}

@@ -1,0 +1,30 @@
+//! Which course session this build was compiled for.
+//!
+//! The Cargo features `s1`..`s7` decide what code exists; a scene file decides what a
+//! render uses. When a scene asks for something this build lacks, the loader names
+//! the feature that brings it, using the session number below.
+
+/// The last course session enabled in this build: 7 with feature `s7` (the default),
+/// 0 when no session feature is on.
+pub const SESSION: u32 = if cfg!(feature = "s7") {
+    7
+} else if cfg!(feature = "s6") {
+    6
+} else if cfg!(feature = "s5") {
+    5
+} else if cfg!(feature = "s4") {
+    4
+} else if cfg!(feature = "s3") {
+    3
+} else if cfg!(feature = "s2") {
+    2
+} else if cfg!(feature = "s1") {
+    1
+} else {
+    0
+};
+
+/// The Cargo feature of a session: `s` followed by its number.
+pub fn feature_name(session: u32) -> String {
+    format!("s{session}")
+}

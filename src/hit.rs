@@ -1,0 +1,63 @@
+//! What a ray finds: the hit record, and how a new ray leaves it without hitting
+//! the same surface again.
+
+use crate::material::Material;
+use crate::math::{Real, Vec3};
+use crate::ray::Ray;
+
+/// The nearest intersection of a ray with the scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// Distance along the ray.
+    pub t: Real,
+    /// The hit point.
+    pub point: Vec3,
+    /// Unit normal of the surface, pointing out of the object.
+    pub normal: Vec3,
+    /// A bound on the rounding error of each coordinate of `point`: the true surface
+    /// point lies in the box `point ± error`.
+    pub error: Vec3,
+    /// The material of the surface that was hit.
+    pub material: Material,
+}
+
+impl Hit {
+    // ANCHOR: spawn
+    /// A ray leaving the hit point towards `direction`, its origin pushed off the
+    /// surface just far enough to clear the point's rounding error (pbrt-v4,
+    /// section 6.8.6): along the normal by `d = |n| . error`, to the side the ray
+    /// leaves by, then rounded one more float away. The offset scales with the
+    /// scene, so no fixed epsilon can be too small for a large scene or too large
+    /// for a small one.
+    pub fn spawn(&self, direction: Vec3) -> Ray {
+        let d = self.normal.abs().dot(self.error);
+        let mut offset = d * self.normal;
+        if direction.dot(self.normal) < 0.0 {
+            offset = -offset;
+        }
+        let pushed = self.point + offset;
+        let away = |p: Real, o: Real| {
+            if o > 0.0 {
+                p.next_up()
+            } else if o < 0.0 {
+                p.next_down()
+            } else {
+                p
+            }
+        };
+        let origin = Vec3::new(
+            away(pushed.x, offset.x),
+            away(pushed.y, offset.y),
+            away(pushed.z, offset.z),
+        );
+        Ray::new(origin, direction)
+    }
+    // ANCHOR_END: spawn
+
+    /// A ray from the hit point towards `target`, with the distance to the target
+    /// measured from the ray's (offset) origin; used for shadow rays.
+    pub fn spawn_towards(&self, target: Vec3) -> (Ray, Real) {
+        let ray = self.spawn(target - self.point);
+        (ray, ray.origin.distance(target))
+    }
+}

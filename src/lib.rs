@@ -1,0 +1,63 @@
+//! # raycourse
+//!
+//! A ray tracer written to be read alongside a seven-session course on ray tracing:
+//! from a white disk on black to a path-traced, textured triangle mesh seen by a
+//! moving camera. Each module is one concept of the course.
+//!
+//! ## Features
+//!
+//! The Cargo features `s1` to `s7` are the course's sessions. Each enables the one
+//! before it, so `--no-default-features --features s3` is the crate a student has
+//! after the third session. The default is `s7`, the whole course.
+//!
+//! | feature | session brings |
+//! |---|---|
+//! | `s1` | camera rays, spheres, nearest hit, Lambert shading with a point light |
+//! | `s2` | gamma correction, shadow rays, mirror and glass spheres |
+//! | `s3` | Monte Carlo indirect lighting, antialiasing |
+//! | `s4` | soft shadows, light sampling, depth of field |
+//! | `s5` | triangle meshes (OBJ), bounding box |
+//! | `s6` | bounding volume hierarchy, smooth normals |
+//! | `s7` | textures, a movable camera |
+//!
+//! A feature decides what code exists; a scene file decides what a render uses.
+
+mod camera;
+mod error;
+mod features;
+mod film;
+mod hit;
+mod light;
+mod material;
+mod math;
+#[cfg(feature = "s2")]
+mod optics;
+mod png;
+mod radiance;
+mod ray;
+mod render;
+mod scene;
+mod scene_file;
+mod sphere;
+mod stages;
+mod values;
+
+pub use camera::*;
+pub use error::*;
+pub use features::*;
+pub use film::*;
+pub use hit::*;
+pub use light::*;
+pub use material::*;
+pub use math::*;
+#[cfg(feature = "s2")]
+pub use optics::*;
+pub use png::*;
+pub use radiance::*;
+pub use ray::*;
+pub use render::*;
+pub use scene::*;
+pub use scene_file::*;
+pub use sphere::*;
+pub use stages::*;
+pub use values::*;

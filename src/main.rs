@@ -1,0 +1,249 @@
+//! The `raycourse` command: list the course's stages, render one, or render any
+//! scene file.
+
+use std::num::{NonZeroU32, NonZeroUsize};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use clap::builder::PossibleValuesParser;
+use clap::{Args, Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
+use raycourse::{Overrides, Scene, SceneError, Stage, encode_png, render, stages};
+
+/// Ray tracing, one course session at a time. With no command, renders the last
+/// stage of this build into `out/`.
+#[derive(Parser)]
+#[command(version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// List the stages of this build: session, figure, name, title, settings.
+    List,
+    /// Render a stage of session 1.
+    #[cfg(feature = "s1")]
+    S1 {
+        /// The stage.
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(1)))]
+        stage: String,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render a stage of session 2.
+    #[cfg(feature = "s2")]
+    S2 {
+        /// The stage.
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(2)))]
+        stage: String,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render a scene file.
+    Render {
+        /// The scene file (TOML).
+        scene: PathBuf,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render every stage of this build at the course's settings into a folder, as
+    /// `<stage>.png`: the book's figures.
+    Figures {
+        /// The folder.
+        #[arg(default_value = "book/src/figures")]
+        dir: PathBuf,
+        /// Hide the progress bars.
+        #[arg(long, short)]
+        quiet: bool,
+    },
+}
+
+/// Settings that replace the scene file's for one render.
+#[derive(Args, Default)]
+struct RenderArgs {
+    /// Image width in pixels.
+    #[arg(long)]
+    width: Option<NonZeroU32>,
+    /// Image height in pixels.
+    #[arg(long)]
+    height: Option<NonZeroU32>,
+    /// Samples per pixel.
+    #[arg(long)]
+    spp: Option<NonZeroU32>,
+    /// Bounce limit for mirrors, glass and indirect light.
+    #[arg(long)]
+    bounces: Option<u32>,
+    /// Seed of the random generators.
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    threads: Option<NonZeroUsize>,
+    /// Output PNG (default: out/<name>.png).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Hide the progress bar.
+    #[arg(long, short)]
+    quiet: bool,
+}
+
+impl RenderArgs {
+    fn overrides(&self) -> Overrides {
+        Overrides {
+            width: self.width,
+            height: self.height,
+            samples: self.spp,
+            bounces: self.bounces,
+            seed: self.seed,
+        }
+    }
+}
+
+#[derive(Debug, thiserror::Error)]
+enum Failure {
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    #[error("this build has no stage: enable a session feature, e.g. --features s1")]
+    NoStage,
+    #[error("cannot start {threads} worker threads: {source}")]
+    Threads {
+        threads: usize,
+        source: rayon::ThreadPoolBuildError,
+    },
+    #[error("{}: cannot write the image: {source}", path.display())]
+    Write {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+}
+
+impl Failure {
+    /// 2 for bad input (as clap's usage errors), 1 for a failure of the machine.
+    fn exit_code(&self) -> ExitCode {
+        match self {
+            Self::Scene(_) | Self::NoStage => ExitCode::from(2),
+            Self::Threads { .. } | Self::Write { .. } => ExitCode::FAILURE,
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    match run(Cli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => {
+            eprintln!("error: {failure}");
+            failure.exit_code()
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<(), Failure> {
+    match cli.command {
+        None => {
+            let stage = stages().last().ok_or(Failure::NoStage)?;
+            render_stage(stage, &RenderArgs::default())
+        }
+        Some(Command::List) => {
+            list();
+            Ok(())
+        }
+        #[cfg(feature = "s1")]
+        Some(Command::S1 { stage, options }) => render_named(1, &stage, &options),
+        #[cfg(feature = "s2")]
+        Some(Command::S2 { stage, options }) => render_named(2, &stage, &options),
+        Some(Command::Render { scene, options }) => {
+            let loaded = raycourse::load_scene(&scene, &options.overrides())?;
+            let name = scene
+                .file_stem()
+                .map_or("scene".into(), |s| s.to_string_lossy());
+            let out = Path::new("out").join(format!("{name}.png"));
+            render_to_file(&name, &loaded, &options, out)
+        }
+        Some(Command::Figures { dir, quiet }) => stages().try_for_each(|stage| {
+            let options = RenderArgs {
+                out: Some(dir.join(format!("{}.png", stage.name))),
+                quiet,
+                ..RenderArgs::default()
+            };
+            render_stage(stage, &options)
+        }),
+    }
+}
+
+fn list() {
+    println!(
+        "{:<8} {:<7} {:<15} {:<58} settings",
+        "session", "figure", "stage", "title"
+    );
+    for stage in stages() {
+        let settings = stage
+            .scene(&Overrides::default())
+            .map_or_else(|e| format!("invalid scene file: {e}"), |s| s.summary());
+        println!(
+            "{:<8} {:<7} {:<15} {:<58} {settings}",
+            format!("s{}", stage.session),
+            stage.figure,
+            stage.name,
+            stage.title
+        );
+    }
+}
+
+#[cfg(feature = "s1")]
+fn render_named(session: u32, name: &str, options: &RenderArgs) -> Result<(), Failure> {
+    let stage = raycourse::find_stage(session, name)
+        .expect("clap only accepts the names of this build's stages");
+    render_stage(stage, options)
+}
+
+fn render_stage(stage: &Stage, options: &RenderArgs) -> Result<(), Failure> {
+    let scene = stage.scene(&options.overrides())?;
+    let out = Path::new("out").join(format!("{}.png", stage.name));
+    render_to_file(stage.name, &scene, options, out)
+}
+
+fn render_to_file(
+    label: &str,
+    scene: &Scene,
+    options: &RenderArgs,
+    default_out: PathBuf,
+) -> Result<(), Failure> {
+    let out = options.out.clone().unwrap_or(default_out);
+    let threads = options.threads.map_or(0, NonZeroUsize::get);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|source| Failure::Threads { threads, source })?;
+    let progress = if options.quiet {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(u64::from(scene.camera.height)).with_style(
+            ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} rows, {eta} left")
+                .expect("the template is valid")
+                .progress_chars("=> "),
+        )
+    };
+    progress.set_message(label.to_owned());
+    let start = Instant::now();
+    let result = pool.install(|| render(scene, &progress));
+    let seconds = start.elapsed().as_secs_f64();
+    progress.finish_and_clear();
+    let png = encode_png(&result.film, scene.settings.gamma);
+    raycourse::write_atomically(&out, &png).map_err(|source| Failure::Write {
+        path: out.clone(),
+        source,
+    })?;
+    println!(
+        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads -> {}",
+        scene.summary(),
+        seconds,
+        result.rays,
+        result.rays as f64 / seconds / 1e6,
+        pool.current_num_threads(),
+        out.display()
+    );
+    Ok(())
+}

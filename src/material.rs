@@ -1,0 +1,28 @@
+//! What a surface does with light.
+
+use crate::math::{Colour, Real};
+
+/// The material of a surface. Each session adds the kinds it teaches.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Material {
+    /// A constant colour whatever the lighting: the first figure's white disk.
+    Flat {
+        /// The radiance returned for every ray that hits the surface.
+        colour: Colour,
+    },
+    /// A Lambertian (matte) surface that reflects the fraction `albedo` of the light
+    /// it receives, equally in every direction: its BRDF is `albedo / pi`.
+    Diffuse {
+        /// Reflectance in red, green and blue, each in [0, 1].
+        albedo: Colour,
+    },
+    /// A perfect mirror: every ray leaves in the reflected direction.
+    #[cfg(feature = "s2")]
+    Mirror,
+    /// A transparent dielectric such as glass, refracting by Snell-Descartes.
+    #[cfg(feature = "s2")]
+    Glass {
+        /// Refractive index inside the object (the outside is air, index 1).
+        index: Real,
+    },
+}

@@ -1,0 +1,122 @@
+//! Mirrors and glass: the laws of reflection and refraction, and the radiance of a
+//! ray that meets a specular surface.
+
+use crate::hit::Hit;
+use crate::math::{Colour, Real, Vec3};
+use crate::radiance::Tracer;
+use crate::ray::Ray;
+
+// ANCHOR: reflect
+/// The mirror direction of `incident` about the unit `normal`: `d - 2 (d . n) n`.
+/// The angle to the normal is kept and the tangential part is unchanged.
+pub fn reflect(incident: Vec3, normal: Vec3) -> Vec3 {
+    incident - 2.0 * incident.dot(normal) * normal
+}
+// ANCHOR_END: reflect
+
+// ANCHOR: refract
+/// The refracted direction of the unit `incident` through a surface with unit
+/// `normal` on the incident side, where `eta = n1 / n2` is the ratio of the indices
+/// before and after. Snell-Descartes, `n1 sin t1 = n2 sin t2`, gives the tangential
+/// part `eta (d - (d . n) n)` and the normal part `-sqrt(1 - eta^2 (1 - (d . n)^2)) n`.
+/// `None` when the square root's argument is negative: total internal reflection.
+pub fn refract(incident: Vec3, normal: Vec3, eta: Real) -> Option<Vec3> {
+    let cos_i = -incident.dot(normal);
+    let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if sin2_t > 1.0 {
+        return None;
+    }
+    let cos_t = (1.0 - sin2_t).sqrt();
+    Some(eta * incident + (eta * cos_i - cos_t) * normal)
+}
+// ANCHOR_END: refract
+
+impl Tracer<'_> {
+    // ANCHOR: mirror
+    /// Radiance seen in a mirror: that of the reflected ray, one bounce fewer.
+    pub fn mirror(&mut self, ray: &Ray, hit: &Hit, bounces: u32) -> Colour {
+        if bounces == 0 {
+            return Colour::ZERO;
+        }
+        let reflected = hit.spawn(reflect(ray.direction, hit.normal));
+        self.radiance(&reflected, bounces - 1)
+    }
+    // ANCHOR_END: mirror
+
+    // ANCHOR: glass
+    /// Radiance seen through glass of refractive `index`: the ray enters (air to
+    /// glass, `eta = 1 / index`) or leaves (glass to air, `eta = index`) and bends;
+    /// past the critical angle it is reflected instead.
+    pub fn glass(&mut self, ray: &Ray, hit: &Hit, index: Real, bounces: u32) -> Colour {
+        if bounces == 0 {
+            return Colour::ZERO;
+        }
+        let entering = ray.direction.dot(hit.normal) < 0.0;
+        let (normal, eta) = if entering {
+            (hit.normal, 1.0 / index)
+        } else {
+            (-hit.normal, index)
+        };
+        let direction =
+            refract(ray.direction, normal, eta).unwrap_or_else(|| reflect(ray.direction, normal));
+        self.radiance(&hit.spawn(direction), bounces - 1)
+    }
+    // ANCHOR_END: glass
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sin_to(v: Vec3, n: Vec3) -> Real {
+        v.normalize().cross(n).length()
+    }
+
+    #[test]
+    fn reflection_keeps_the_angle() {
+        let n = Vec3::Y;
+        for angle in [0.0_f64, 0.1, 0.7, 1.2, 1.5] {
+            let d = Vec3::new(angle.sin(), -angle.cos(), 0.0);
+            let r = reflect(d, n);
+            assert!((r.dot(n) - angle.cos()).abs() < 1e-15);
+            assert!((r.x - d.x).abs() < 1e-15, "tangential part kept");
+            assert!((r.length() - 1.0).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn refraction_obeys_snell() {
+        let n = Vec3::Y;
+        for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.0, 2.4), (1.33, 1.0)] {
+            for angle in [0.0_f64, 0.2, 0.5, 0.6] {
+                let d = Vec3::new(angle.sin(), -angle.cos(), 0.0);
+                let t = refract(d, n, n1 / n2).expect("below the critical angle");
+                assert!((t.length() - 1.0).abs() < 1e-14);
+                assert!(t.dot(n) < 0.0, "the ray crosses the surface");
+                let lhs = n1 * sin_to(d, n);
+                let rhs = n2 * sin_to(t, n);
+                assert!(
+                    (lhs - rhs).abs() < 1e-14,
+                    "{n1} sin t1 = {lhs}, {n2} sin t2 = {rhs}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn total_internal_reflection_past_the_critical_angle() {
+        let n = Vec3::Y;
+        let index: Real = 1.5;
+        let critical = (1.0 / index).asin();
+        let below = critical - 1e-6;
+        let above = critical + 1e-6;
+        let d = |a: Real| Vec3::new(a.sin(), -a.cos(), 0.0);
+        assert!(refract(d(below), n, index).is_some());
+        assert!(refract(d(above), n, index).is_none());
+        let grazing = refract(d(below), n, index).unwrap();
+        assert!(
+            grazing.dot(n).abs() < 1e-2,
+            "leaves nearly along the surface"
+        );
+    }
+}

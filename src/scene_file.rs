@@ -1,0 +1,278 @@
+//! The scene file format (TOML): what a stage declares, checked and turned into a
+//! [`Scene`]. Unknown keys are refused, so a misspelt setting never goes unnoticed.
+
+use std::num::NonZeroU32;
+use std::path::Path;
+
+use serde::Deserialize;
+
+use crate::camera::Camera;
+use crate::error::SceneError;
+use crate::features::{SESSION, feature_name};
+use crate::light::PointLight;
+use crate::material::Material;
+use crate::scene::{Scene, Settings};
+use crate::sphere::Sphere;
+use crate::values::{Albedo, Degrees, NonNegative, Point, Positive, Rgb};
+
+/// The largest image, in pixels, a scene may ask for (8192 x 8192): beyond it the
+/// film alone would take gigabytes.
+pub const MAX_PIXELS: u64 = 8192 * 8192;
+
+/// A whole scene file.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    /// The `[render]` table.
+    pub render: RenderSpec,
+    /// The `[camera]` table.
+    pub camera: CameraSpec,
+    /// The `[light]` table, if the scene is lit.
+    pub light: Option<LightSpec>,
+    /// The `[[spheres]]` array.
+    #[serde(default)]
+    pub spheres: Vec<SphereSpec>,
+}
+
+/// `[render]`: image size and how the render is done.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RenderSpec {
+    /// Image width in pixels.
+    pub width: NonZeroU32,
+    /// Image height in pixels.
+    pub height: NonZeroU32,
+    /// Samples per pixel (default 1).
+    #[serde(default = "one")]
+    pub samples: NonZeroU32,
+    /// Reflections and refractions allowed along a path (default 5).
+    #[serde(default = "five")]
+    pub bounces: u32,
+    /// Seed of the random generators (default 0).
+    #[serde(default)]
+    pub seed: u64,
+    /// Display gamma (absent: linear output).
+    pub gamma: Option<Positive>,
+    /// Whether shadow rays are traced (default false).
+    #[serde(default)]
+    pub shadows: bool,
+}
+
+fn one() -> NonZeroU32 {
+    NonZeroU32::MIN
+}
+
+fn five() -> u32 {
+    5
+}
+
+/// `[camera]`: the eye.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CameraSpec {
+    /// Where the eye is.
+    pub position: Point,
+    /// Vertical field of view in degrees.
+    pub fov: Degrees,
+}
+
+/// `[light]`: a point light.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightSpec {
+    /// Where the light is.
+    pub position: Point,
+    /// Its intensity `I`.
+    pub intensity: NonNegative,
+}
+
+/// One `[[spheres]]` entry.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SphereSpec {
+    /// Centre of the sphere.
+    pub centre: Point,
+    /// Radius, greater than 0.
+    pub radius: Positive,
+    /// What it is made of.
+    pub material: MaterialSpec,
+}
+
+/// A material as written in a scene file: `{ diffuse = [r, g, b] }`, `"mirror"`,
+/// `{ glass = 1.5 }` or `{ flat = [r, g, b] }`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(rename_all = "kebab-case", deny_unknown_fields)]
+pub enum MaterialSpec {
+    /// Constant colour (session 1).
+    Flat(Rgb),
+    /// Lambertian with this albedo (session 1).
+    Diffuse(Albedo),
+    /// Perfect mirror (session 2).
+    Mirror,
+    /// Glass with this refractive index (session 2).
+    Glass(Positive),
+}
+
+impl MaterialSpec {
+    /// The course session that teaches this material, and its name.
+    fn session(self) -> (u32, &'static str) {
+        match self {
+            Self::Flat(_) => (1, "a flat material"),
+            Self::Diffuse(_) => (1, "a diffuse material"),
+            Self::Mirror => (2, "a mirror material"),
+            Self::Glass(_) => (2, "a glass material"),
+        }
+    }
+
+    /// The material of the renderer, or `None` if this build lacks it.
+    fn build(self) -> Option<Material> {
+        #[allow(unreachable_patterns, reason = "all arms exist from session 2 on")]
+        match self {
+            Self::Flat(Rgb(colour)) => Some(Material::Flat { colour }),
+            Self::Diffuse(Albedo(albedo)) => Some(Material::Diffuse { albedo }),
+            #[cfg(feature = "s2")]
+            Self::Mirror => Some(Material::Mirror),
+            #[cfg(feature = "s2")]
+            Self::Glass(Positive(index)) => Some(Material::Glass { index }),
+            _ => None,
+        }
+    }
+}
+
+/// Render settings given on the command line, replacing those of the scene file
+/// before it is checked.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Overrides {
+    /// Image width in pixels.
+    pub width: Option<NonZeroU32>,
+    /// Image height in pixels.
+    pub height: Option<NonZeroU32>,
+    /// Samples per pixel.
+    pub samples: Option<NonZeroU32>,
+    /// Bounce limit.
+    pub bounces: Option<u32>,
+    /// Random seed.
+    pub seed: Option<u64>,
+}
+
+impl Overrides {
+    fn apply(&self, r: &mut RenderSpec) {
+        r.width = self.width.unwrap_or(r.width);
+        r.height = self.height.unwrap_or(r.height);
+        r.samples = self.samples.unwrap_or(r.samples);
+        r.bounces = self.bounces.unwrap_or(r.bounces);
+        r.seed = self.seed.unwrap_or(r.seed);
+    }
+}
+
+/// Reads and checks the scene file at `path`, with `overrides` applied.
+pub fn load_scene(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
+    let source = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+        path: path.to_owned(),
+        source,
+    })?;
+    parse_scene(&source, path, overrides)
+}
+
+/// Parses and checks scene-file text, with `overrides` applied; `path` names it in
+/// error messages.
+pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
+    let invalid = |span: Option<std::ops::Range<usize>>, key: String, message: &str| {
+        let (line, column) = line_and_column(source, span.map_or(0, |s| s.start));
+        SceneError::Invalid {
+            path: path.to_owned(),
+            line,
+            column,
+            key,
+            message: message.replace('\n', " "),
+        }
+    };
+    let deserializer = toml::Deserializer::parse(source)
+        .map_err(|e| invalid(e.span(), String::new(), e.message()))?;
+    let mut file: SceneFile = serde_path_to_error::deserialize(deserializer).map_err(|e| {
+        let key = e.path().to_string();
+        let inner = e.into_inner();
+        invalid(inner.span(), key, inner.message())
+    })?;
+    overrides.apply(&mut file.render);
+    file.into_scene(path)
+}
+
+/// 1-based line and column of byte `offset` in `source`.
+fn line_and_column(source: &str, offset: usize) -> (usize, usize) {
+    let before = &source[..offset.min(source.len())];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, column)
+}
+
+impl SceneFile {
+    /// The scene this file describes, once every value is known to be usable in this
+    /// build.
+    pub fn into_scene(self, path: &Path) -> Result<Scene, SceneError> {
+        let missing = |key: &str, session: u32, what: &str| SceneError::NeedsFeature {
+            path: path.to_owned(),
+            key: key.to_owned(),
+            what: what.to_owned(),
+            feature: feature_name(session),
+        };
+        let needs = |key: &str, session: u32, what: &str| {
+            if session <= SESSION {
+                Ok(())
+            } else {
+                Err(missing(key, session, what))
+            }
+        };
+        let r = &self.render;
+        let pixels = u64::from(r.width.get()) * u64::from(r.height.get());
+        if pixels > MAX_PIXELS {
+            return Err(SceneError::Inconsistent {
+                path: path.to_owned(),
+                key: "render.width".into(),
+                message: format!(
+                    "{} x {} is {pixels} pixels; at most {MAX_PIXELS} are allowed",
+                    r.width, r.height
+                ),
+            });
+        }
+        if r.gamma.is_some() {
+            needs("render.gamma", 2, "gamma correction")?;
+        }
+        if r.shadows {
+            needs("render.shadows", 2, "shadow rays")?;
+        }
+        let mut spheres = Vec::with_capacity(self.spheres.len());
+        for (i, s) in self.spheres.iter().enumerate() {
+            let (session, what) = s.material.session();
+            let material = s
+                .material
+                .build()
+                .ok_or_else(|| missing(&format!("spheres[{i}].material"), session, what))?;
+            spheres.push(Sphere {
+                centre: s.centre.0,
+                radius: s.radius.0,
+                material,
+            });
+        }
+        Ok(Scene {
+            camera: Camera {
+                position: self.camera.position.0,
+                fov: self.camera.fov.0.to_radians(),
+                width: r.width.get(),
+                height: r.height.get(),
+            },
+            spheres,
+            light: self.light.map(|l| PointLight {
+                position: l.position.0,
+                intensity: l.intensity.0,
+            }),
+            settings: Settings {
+                samples: r.samples.get(),
+                bounces: r.bounces,
+                seed: r.seed,
+                gamma: r.gamma.map_or(1.0, |g| g.0),
+                shadows: r.shadows,
+            },
+        })
+    }
+}

@@ -1,0 +1,86 @@
+//! The course's stages: one scene file per figure, built into the binary so that it
+//! runs from any folder.
+
+use std::path::Path;
+
+use crate::error::SceneError;
+use crate::features::SESSION;
+use crate::scene::Scene;
+use crate::scene_file::{Overrides, parse_scene};
+
+/// One stage of the course: a figure of the course notes and the scene file that
+/// renders it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stage {
+    /// The session that teaches it, 1 to 7.
+    pub session: u32,
+    /// The figure of the course it reproduces.
+    pub figure: u32,
+    /// Its name on the command line, such as `glass`.
+    pub name: &'static str,
+    /// What the stage adds, in a few words.
+    pub title: &'static str,
+    /// The scene file's path in the repository.
+    pub path: &'static str,
+    /// The scene file's text.
+    pub source: &'static str,
+}
+
+macro_rules! stage {
+    ($session:literal, $figure:literal, $name:literal, $title:literal) => {
+        Stage {
+            session: $session,
+            figure: $figure,
+            name: $name,
+            title: $title,
+            path: concat!("sessions/s", $session, "/", $name, ".toml"),
+            source: include_str!(concat!("../sessions/s", $session, "/", $name, ".toml")),
+        }
+    };
+}
+
+/// Every stage of the course written so far, in course order.
+const ALL: &[Stage] = &[
+    stage!(
+        1,
+        1,
+        "white-disk",
+        "camera rays and a sphere: white where a ray hits"
+    ),
+    stage!(1, 2, "shading", "Lambert shading under a point light"),
+    stage!(1, 3, "spheres", "several spheres, the nearest hit wins"),
+    stage!(2, 4, "gamma", "gamma correction"),
+    stage!(2, 5, "shadows", "shadow rays"),
+    stage!(2, 6, "mirror", "a mirror sphere: recursive radiance"),
+    stage!(
+        2,
+        7,
+        "glass",
+        "a glass sphere: refraction and total internal reflection"
+    ),
+];
+
+/// The stages of this build: those of the sessions its features enable.
+pub fn stages() -> impl Iterator<Item = &'static Stage> {
+    ALL.iter().filter(|s| s.session <= SESSION)
+}
+
+/// The names of the stages of `session`, in course order.
+pub fn stage_names(session: u32) -> Vec<&'static str> {
+    stages()
+        .filter(|s| s.session == session)
+        .map(|s| s.name)
+        .collect()
+}
+
+/// The stage of `session` called `name`, if this build has it.
+pub fn find_stage(session: u32, name: &str) -> Option<&'static Stage> {
+    stages().find(|s| s.session == session && s.name == name)
+}
+
+impl Stage {
+    /// The stage's scene, at the course's settings but for `overrides`.
+    pub fn scene(&self, overrides: &Overrides) -> Result<Scene, SceneError> {
+        parse_scene(self.source, Path::new(self.path), overrides)
+    }
+}
