@@ -5,7 +5,7 @@
 //! the feature that brings it, using the session number below.
 
 /// The last course session enabled in this build: 7 with feature `s7` (the default),
-/// 0 when no session feature is on.
+/// 1 with `s1` alone.
 pub const SESSION: u32 = if cfg!(feature = "s7") {
     7
 } else if cfg!(feature = "s6") {
@@ -18,10 +18,8 @@ pub const SESSION: u32 = if cfg!(feature = "s7") {
     3
 } else if cfg!(feature = "s2") {
     2
-} else if cfg!(feature = "s1") {
-    1
 } else {
-    0
+    1
 };
 
 /// The Cargo feature of a session: `s` followed by its number.

@@ -25,7 +25,6 @@ enum Command {
     /// List the stages of this build: session, figure, name, title, settings.
     List,
     /// Render a stage of session 1.
-    #[cfg(feature = "s1")]
     S1 {
         /// The stage.
         #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(1)))]
@@ -106,8 +105,6 @@ impl RenderArgs {
 enum Failure {
     #[error(transparent)]
     Scene(#[from] SceneError),
-    #[error("this build has no stage: enable a session feature, e.g. --features s1")]
-    NoStage,
     #[error("cannot start {threads} worker threads: {source}")]
     Threads {
         threads: usize,
@@ -124,7 +121,7 @@ impl Failure {
     /// 2 for bad input (as clap's usage errors), 1 for a failure of the machine.
     fn exit_code(&self) -> ExitCode {
         match self {
-            Self::Scene(_) | Self::NoStage => ExitCode::from(2),
+            Self::Scene(_) => ExitCode::from(2),
             Self::Threads { .. } | Self::Write { .. } => ExitCode::FAILURE,
         }
     }
@@ -143,14 +140,13 @@ fn main() -> ExitCode {
 fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
         None => {
-            let stage = stages().last().ok_or(Failure::NoStage)?;
+            let stage = stages().last().expect("every build has session 1's stages");
             render_stage(stage, &RenderArgs::default())
         }
         Some(Command::List) => {
             list();
             Ok(())
         }
-        #[cfg(feature = "s1")]
         Some(Command::S1 { stage, options }) => render_named(1, &stage, &options),
         #[cfg(feature = "s2")]
         Some(Command::S2 { stage, options }) => render_named(2, &stage, &options),
@@ -192,7 +188,6 @@ fn list() {
     }
 }
 
-#[cfg(feature = "s1")]
 fn render_named(session: u32, name: &str, options: &RenderArgs) -> Result<(), Failure> {
     let stage = raycourse::find_stage(session, name)
         .expect("clap only accepts the names of this build's stages");

@@ -1,6 +1,6 @@
 //! What a surface does with light.
 
-use crate::math::{Colour, Real};
+use crate::math::Colour;
 
 /// The material of a surface. Each session adds the kinds it teaches.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -23,6 +23,6 @@ pub enum Material {
     #[cfg(feature = "s2")]
     Glass {
         /// Refractive index inside the object (the outside is air, index 1).
-        index: Real,
+        index: crate::math::Real,
     },
 }

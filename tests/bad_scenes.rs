@@ -1,0 +1,192 @@
+//! Scene files with mistakes: each gives one line naming the file, the key (and
+//! line where TOML knows it) and what was expected.
+
+use std::path::Path;
+
+use raycourse::{Overrides, SESSION, SceneError, load_scene, parse_scene};
+
+const GOOD: &str = r#"
+[render]
+width = 64
+height = 48
+
+[camera]
+position = [0, 0, 55]
+fov = 60
+
+[light]
+position = [-10, 20, 40]
+intensity = 2e7
+
+[[spheres]]
+centre = [0, 0, 0]
+radius = 10
+material = { diffuse = [1, 1, 1] }
+"#;
+
+/// The error for `GOOD` with the line starting with `key =` replaced by `line`.
+fn error_with(key: &str, line: &str) -> String {
+    let text: String = GOOD
+        .lines()
+        .map(|l| if l.starts_with(key) { line } else { l })
+        .collect::<Vec<_>>()
+        .join("\n");
+    assert_ne!(text.trim(), GOOD.trim(), "the case changes the file");
+    let err = parse_scene(&text, Path::new("room.toml"), &Overrides::default())
+        .expect_err("the scene is invalid");
+    let message = err.to_string();
+    assert!(!message.contains('\n'), "one line: {message}");
+    message
+}
+
+#[test]
+fn the_good_scene_loads() {
+    let scene = parse_scene(GOOD, Path::new("room.toml"), &Overrides::default()).unwrap();
+    assert_eq!((scene.camera.width, scene.camera.height), (64, 48));
+    assert_eq!(scene.spheres.len(), 1);
+    assert_eq!(scene.settings.bounces, 5, "default bounce limit");
+}
+
+#[test]
+fn unknown_key() {
+    assert_eq!(
+        error_with("radius", "radis = 10"),
+        "room.toml:16:1: key `spheres[0].radis`: unknown field `radis`, expected one of \
+         `centre`, `radius`, `material`"
+    );
+}
+
+#[test]
+fn wrong_type() {
+    assert_eq!(
+        error_with("width", "width = \"wide\""),
+        "room.toml:3:9: key `render.width`: invalid type: string \"wide\", expected a nonzero u32"
+    );
+}
+
+#[test]
+fn negative_radius() {
+    assert_eq!(
+        error_with("radius", "radius = -10"),
+        "room.toml:16:10: key `spheres[0].radius`: expected a number greater than 0, found -10"
+    );
+}
+
+#[test]
+fn zero_radius() {
+    assert_eq!(
+        error_with("radius", "radius = 0"),
+        "room.toml:16:10: key `spheres[0].radius`: expected a number greater than 0, found 0"
+    );
+}
+
+#[test]
+fn nan_number() {
+    assert_eq!(
+        error_with("intensity", "intensity = nan"),
+        "room.toml:12:13: key `light.intensity`: expected a finite number, found NaN"
+    );
+}
+
+#[test]
+fn infinite_coordinate() {
+    assert_eq!(
+        error_with("centre", "centre = [0, inf, 0]"),
+        "room.toml:15:10: key `spheres[0].centre`: expected a finite number, found inf"
+    );
+}
+
+#[test]
+fn zero_width_and_height() {
+    assert_eq!(
+        error_with("width", "width = 0"),
+        "room.toml:3:9: key `render.width`: invalid value: integer `0`, expected a nonzero u32"
+    );
+    assert_eq!(
+        error_with("height", "height = 0"),
+        "room.toml:4:10: key `render.height`: invalid value: integer `0`, expected a nonzero u32"
+    );
+}
+
+#[test]
+fn albedo_above_one() {
+    assert_eq!(
+        error_with("material", "material = { diffuse = [1, 2, 1] }"),
+        "room.toml:17:12: key `spheres[0].material.diffuse`: expected an albedo between 0 and 1, \
+         found 2"
+    );
+}
+
+#[test]
+fn unknown_material() {
+    assert_eq!(
+        error_with("material", "material = \"chrome\""),
+        "room.toml:17:12: key `spheres[0].material`: unknown variant `chrome`, expected one of \
+         `flat`, `diffuse`, `mirror`, `glass`"
+    );
+}
+
+#[test]
+fn missing_key() {
+    assert_eq!(
+        error_with("fov", "# no field of view"),
+        "room.toml:6:1: key `camera`: missing field `fov`"
+    );
+}
+
+#[test]
+fn syntax_error() {
+    assert_eq!(
+        error_with("width", "width = = 3"),
+        "room.toml:3:9: extra `=`, expected nothing"
+    );
+}
+
+#[test]
+fn image_too_large() {
+    assert_eq!(
+        error_with("width", "width = 10000000"),
+        "room.toml: key `render.width`: 10000000 x 48 is 480000000 pixels; at most 67108864 \
+         are allowed"
+    );
+}
+
+#[test]
+fn missing_file() {
+    let err = load_scene(Path::new("no/such/scene.toml"), &Overrides::default()).unwrap_err();
+    assert!(matches!(err, SceneError::Read { .. }));
+    assert_eq!(
+        err.to_string(),
+        "no/such/scene.toml: cannot read the scene file: No such file or directory (os error 2)"
+    );
+}
+
+#[test]
+fn later_session_materials_name_their_feature() {
+    let text = GOOD.replace("{ diffuse = [1, 1, 1] }", "\"mirror\"");
+    let result = parse_scene(&text, Path::new("room.toml"), &Overrides::default());
+    if SESSION >= 2 {
+        assert!(result.is_ok());
+    } else {
+        assert_eq!(
+            result.unwrap_err().to_string(),
+            "room.toml: key `spheres[0].material`: a mirror material needs feature s2: \
+             cargo run --features s2 -- ..."
+        );
+    }
+}
+
+#[test]
+fn later_session_settings_name_their_feature() {
+    let text = GOOD.replace("height = 48", "height = 48\nshadows = true");
+    let result = parse_scene(&text, Path::new("room.toml"), &Overrides::default());
+    if SESSION >= 2 {
+        assert!(result.unwrap().settings.shadows);
+    } else {
+        assert_eq!(
+            result.unwrap_err().to_string(),
+            "room.toml: key `render.shadows`: shadow rays needs feature s2: \
+             cargo run --features s2 -- ..."
+        );
+    }
+}

@@ -1,0 +1,151 @@
+//! The `raycourse` command as a student runs it.
+
+use std::path::Path;
+use std::process::Output;
+
+use assert_cmd::cargo::cargo_bin_cmd;
+use raycourse::stages;
+
+fn run(args: &[&str], dir: &Path) -> Output {
+    cargo_bin_cmd!("raycourse")
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap()
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+#[test]
+fn list_shows_exactly_the_stages_of_this_build() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(&["list"], dir.path());
+    assert!(out.status.success());
+    let stdout = text(&out.stdout);
+    let listed: Vec<&str> = stdout
+        .lines()
+        .skip(1)
+        .map(|l| l.split_whitespace().nth(2).unwrap())
+        .collect();
+    let expected: Vec<&str> = stages().map(|s| s.name).collect();
+    assert_eq!(listed, expected);
+    assert!(stdout.lines().skip(1).all(|l| l.contains("512x512")));
+}
+
+#[test]
+fn session_one_has_its_three_stages() {
+    assert_eq!(
+        raycourse::stage_names(1),
+        ["white-disk", "shading", "spheres"]
+    );
+}
+
+#[cfg(feature = "s2")]
+#[test]
+fn session_two_has_its_four_stages() {
+    assert_eq!(
+        raycourse::stage_names(2),
+        ["gamma", "shadows", "mirror", "glass"]
+    );
+}
+
+#[test]
+fn a_stage_renders_to_the_requested_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(
+        &[
+            "s1",
+            "white-disk",
+            "--width",
+            "32",
+            "--height",
+            "24",
+            "--out",
+            "disk.png",
+            "-q",
+        ],
+        dir.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    assert!(stdout.starts_with("white-disk: 32x24, 1 spp"), "{stdout}");
+    assert!(
+        stdout.contains("Mrays/s") && stdout.contains("768 rays"),
+        "{stdout}"
+    );
+    let image = image::open(dir.path().join("disk.png")).unwrap().to_rgb8();
+    assert_eq!(image.dimensions(), (32, 24));
+    assert_eq!(image.get_pixel(16, 12).0, [255, 255, 255]);
+    assert_eq!(image.get_pixel(0, 0).0, [0, 0, 0]);
+}
+
+#[test]
+fn an_unknown_stage_lists_the_valid_ones() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(&["s1", "glass"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = text(&out.stderr);
+    assert!(
+        stderr.contains("invalid value 'glass'")
+            && stderr.contains("[possible values: white-disk, shading, spheres]"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_bad_scene_fails_cleanly_and_leaves_the_output_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("bad.toml");
+    std::fs::write(&scene, "[render]\nwidth = 0\nheight = 4\n").unwrap();
+    let previous = dir.path().join("keep.png");
+    std::fs::write(&previous, b"an earlier image").unwrap();
+    let out = run(&["render", "bad.toml", "--out", "keep.png"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        text(&out.stderr),
+        "error: bad.toml:2:9: key `render.width`: invalid value: integer `0`, expected a \
+         nonzero u32\n"
+    );
+    assert_eq!(std::fs::read(&previous).unwrap(), b"an earlier image");
+    assert!(!dir.path().join("out").exists(), "no output written");
+}
+
+#[test]
+fn a_missing_scene_file_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(&["render", "nowhere.toml"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).starts_with("error: nowhere.toml: cannot read the scene file:"),
+        "{}",
+        text(&out.stderr)
+    );
+}
+
+#[test]
+fn a_scene_file_renders_into_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let source = Path::new(env!("CARGO_MANIFEST_DIR")).join("sessions/s1/shading.toml");
+    std::fs::copy(source, dir.path().join("lit.toml")).unwrap();
+    let out = run(
+        &[
+            "render", "lit.toml", "--width", "16", "--height", "16", "--quiet",
+        ],
+        dir.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let image = image::open(dir.path().join("out/lit.png")).unwrap();
+    assert_eq!((image.width(), image.height()), (16, 16));
+}
+
+#[test]
+fn no_arguments_renders_the_last_stage_of_the_build() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(&[], dir.path());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let last = stages().last().unwrap().name;
+    let image = image::open(dir.path().join(format!("out/{last}.png"))).unwrap();
+    assert_eq!((image.width(), image.height()), (512, 512));
+}
