@@ -3,6 +3,7 @@
 //! Every other module says `Real`, `Vec3` and `Colour` rather than `f64` or
 //! `glam::DVec3`, so the precision of the renderer is chosen here and nowhere else.
 
+// ANCHOR: types
 /// The scalar type of every distance, angle and radiance value.
 pub type Real = f64;
 
@@ -11,6 +12,7 @@ pub type Vec3 = glam::DVec3;
 
 /// Linear radiance in red, green and blue, on the course's scale (see [`crate::Film`]).
 pub type Colour = glam::DVec3;
+// ANCHOR_END: types
 
 /// The constant pi at the precision of [`Real`].
 pub const PI: Real = std::f64::consts::PI;
