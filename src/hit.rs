@@ -2,7 +2,7 @@
 //! the same surface again.
 
 use crate::material::Material;
-use crate::math::{Real, Vec3};
+use crate::math::{Colour, Real, Vec3};
 use crate::ray::Ray;
 
 /// The nearest intersection of a ray with the scene.
@@ -19,6 +19,8 @@ pub struct Hit {
     pub error: Vec3,
     /// The material of the surface that was hit.
     pub material: Material,
+    /// The radiance the surface emits.
+    pub emission: Colour,
 }
 
 impl Hit {

@@ -5,11 +5,6 @@ use crate::math::Colour;
 /// The material of a surface. Each session adds the kinds it teaches.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Material {
-    /// A constant colour whatever the lighting: the first figure's white disk.
-    Flat {
-        /// The radiance returned for every ray that hits the surface.
-        colour: Colour,
-    },
     /// A Lambertian (matte) surface that reflects the fraction `albedo` of the light
     /// it receives, equally in every direction: its BRDF is `albedo / pi`.
     Diffuse {

@@ -29,7 +29,8 @@ impl<'a> Tracer<'a> {
 
     // ANCHOR: radiance
     /// The radiance arriving along `ray`, with at most `bounces` more reflections or
-    /// refractions allowed. A ray that leaves the scene sees black.
+    /// refractions allowed: what the surface it hits emits, plus what it reflects. A
+    /// ray that leaves the scene sees black.
     pub fn radiance(
         &mut self,
         ray: &Ray,
@@ -38,14 +39,14 @@ impl<'a> Tracer<'a> {
         let Some(hit) = self.trace(ray) else {
             return Colour::ZERO;
         };
-        match hit.material {
-            Material::Flat { colour } => colour,
+        let reflected = match hit.material {
             Material::Diffuse { albedo } => self.direct_light(&hit, albedo),
             #[cfg(feature = "s2")]
             Material::Mirror => self.mirror(ray, &hit, bounces),
             #[cfg(feature = "s2")]
             Material::Glass { index } => self.glass(ray, &hit, index, bounces),
-        }
+        };
+        hit.emission + reflected
     }
     // ANCHOR_END: radiance
 

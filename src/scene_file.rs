@@ -11,6 +11,7 @@ use crate::error::SceneError;
 use crate::features::{SESSION, feature_name};
 use crate::light::PointLight;
 use crate::material::Material;
+use crate::math::Colour;
 use crate::scene::{Scene, Settings};
 use crate::sphere::Sphere;
 use crate::values::{Albedo, Degrees, NonNegative, Point, Positive, Rgb};
@@ -96,15 +97,15 @@ pub struct SphereSpec {
     pub radius: Positive,
     /// What it is made of.
     pub material: MaterialSpec,
+    /// Radiance it emits (default none).
+    pub emission: Option<Rgb>,
 }
 
-/// A material as written in a scene file: `{ diffuse = [r, g, b] }`, `"mirror"`,
-/// `{ glass = 1.5 }` or `{ flat = [r, g, b] }`.
+/// A material as written in a scene file: `{ diffuse = [r, g, b] }`, `"mirror"` or
+/// `{ glass = 1.5 }`.
 #[derive(Clone, Copy, Debug, Deserialize)]
 #[serde(rename_all = "kebab-case", deny_unknown_fields)]
 pub enum MaterialSpec {
-    /// Constant colour (session 1).
-    Flat(Rgb),
     /// Lambertian with this albedo (session 1).
     Diffuse(Albedo),
     /// Perfect mirror (session 2).
@@ -117,7 +118,6 @@ impl MaterialSpec {
     /// The course session that teaches this material, and its name.
     fn session(self) -> (u32, &'static str) {
         match self {
-            Self::Flat(_) => (1, "a flat material"),
             Self::Diffuse(_) => (1, "a diffuse material"),
             Self::Mirror => (2, "a mirror material"),
             Self::Glass(_) => (2, "a glass material"),
@@ -128,7 +128,6 @@ impl MaterialSpec {
     fn build(self) -> Option<Material> {
         #[allow(unreachable_patterns, reason = "all arms exist from session 2 on")]
         match self {
-            Self::Flat(Rgb(colour)) => Some(Material::Flat { colour }),
             Self::Diffuse(Albedo(albedo)) => Some(Material::Diffuse { albedo }),
             #[cfg(feature = "s2")]
             Self::Mirror => Some(Material::Mirror),
@@ -252,6 +251,7 @@ impl SceneFile {
                 centre: s.centre.0,
                 radius: s.radius.0,
                 material,
+                emission: s.emission.map_or(Colour::ZERO, |e| e.0),
             });
         }
         Ok(Scene {

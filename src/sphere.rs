@@ -3,7 +3,7 @@
 
 use crate::hit::Hit;
 use crate::material::Material;
-use crate::math::{Real, Vec3, error_bound};
+use crate::math::{Colour, Real, Vec3, error_bound};
 use crate::ray::Ray;
 
 /// A sphere of centre `centre`, radius `radius`, made of `material`.
@@ -13,8 +13,11 @@ pub struct Sphere {
     pub centre: Vec3,
     /// Radius, positive.
     pub radius: Real,
-    /// What its surface is made of.
+    /// What its surface is made of: how it reflects light.
     pub material: Material,
+    /// Radiance the surface emits by itself, in every direction (zero for most
+    /// objects): the white disk of figure 1 glows, and so will session 4's light.
+    pub emission: Colour,
 }
 
 impl Sphere {
@@ -66,6 +69,7 @@ impl Sphere {
             normal,
             error: error_bound(7) * (self.centre.abs() + (self.radius * normal).abs()),
             material: self.material,
+            emission: self.emission,
         }
     }
 }
@@ -73,7 +77,6 @@ impl Sphere {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::Colour;
 
     fn sphere(centre: Vec3, radius: Real) -> Sphere {
         Sphere {
@@ -82,6 +85,7 @@ mod tests {
             material: Material::Diffuse {
                 albedo: Colour::ONE,
             },
+            emission: Colour::ZERO,
         }
     }
 

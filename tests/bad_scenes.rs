@@ -52,7 +52,7 @@ fn unknown_key() {
     assert_eq!(
         error_with("radius", "radis = 10"),
         "room.toml:16:1: key `spheres[0].radis`: unknown field `radis`, expected one of \
-         `centre`, `radius`, `material`"
+         `centre`, `radius`, `material`, `emission`"
     );
 }
 
@@ -122,7 +122,7 @@ fn unknown_material() {
     assert_eq!(
         error_with("material", "material = \"chrome\""),
         "room.toml:17:12: key `spheres[0].material`: unknown variant `chrome`, expected one of \
-         `flat`, `diffuse`, `mirror`, `glass`"
+         `diffuse`, `mirror`, `glass`"
     );
 }
 
