@@ -2,8 +2,33 @@
 
 use crate::math::{Real, Vec3};
 use crate::ray::Ray;
+use crate::rng::PixelRng;
 
-/// A pinhole camera at `position`, looking down `-z` with `y` up.
+/// Where in its pixel a camera ray aims.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum PixelFilter {
+    /// At the centre: one ray per pixel is enough, and edges are jagged.
+    Centre,
+    /// At a point scattered around the centre with a Gaussian of standard deviation
+    /// `sigma` pixels: averaging many samples smooths the edges (antialiasing).
+    #[cfg(feature = "s3")]
+    Gaussian {
+        /// Standard deviation, in pixels.
+        sigma: Real,
+    },
+}
+
+/// Where camera rays start.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Lens {
+    /// All at the eye: everything is sharp.
+    Pinhole,
+    /// Anywhere on a lens: only the focus plane is sharp (depth of field).
+    #[cfg(feature = "s4")]
+    Thin(crate::lens::ThinLens),
+}
+
+/// A camera at `position`, looking down `-z` with `y` up.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
     /// The eye: where every camera ray starts.
@@ -14,6 +39,10 @@ pub struct Camera {
     pub width: u32,
     /// Image height in pixels.
     pub height: u32,
+    /// Where in its pixel a ray aims.
+    pub filter: PixelFilter,
+    /// Where rays start.
+    pub lens: Lens,
 }
 
 impl Camera {
@@ -35,10 +64,31 @@ impl Camera {
     }
     // ANCHOR_END: pixel_direction
 
-    /// The camera ray through the centre of pixel (`row`, `column`).
-    pub fn primary_ray(&self, row: u32, column: u32) -> Ray {
-        Ray::new(self.position, self.pixel_direction(row, column))
+    // ANCHOR: camera_ray
+    /// A camera ray through pixel (`row`, `column`): aimed where the pixel filter says,
+    /// starting where the lens says, drawing from `rng` when either is random.
+    pub fn ray(
+        &self,
+        row: u32,
+        column: u32,
+        #[cfg_attr(not(feature = "s3"), expect(unused_variables))] rng: &mut PixelRng,
+    ) -> Ray {
+        let (dx, dy) = match self.filter {
+            PixelFilter::Centre => (0.0, 0.0),
+            #[cfg(feature = "s3")]
+            PixelFilter::Gaussian { sigma } => {
+                let (u1, u2) = (crate::rng::uniform(rng), crate::rng::uniform(rng));
+                crate::sampling::sample_gaussian(u1, u2, sigma)
+            }
+        };
+        let direction = self.pixel_direction(row, column) + Vec3::new(dx, dy, 0.0);
+        match self.lens {
+            Lens::Pinhole => Ray::new(self.position, direction),
+            #[cfg(feature = "s4")]
+            Lens::Thin(lens) => lens.ray(self.position, direction, rng),
+        }
     }
+    // ANCHOR_END: camera_ray
 }
 
 #[cfg(test)]
@@ -51,6 +101,8 @@ mod tests {
             fov: (60.0 as Real).to_radians(),
             width: 512,
             height: 256,
+            filter: PixelFilter::Centre,
+            lens: Lens::Pinhole,
         }
     }
 

@@ -21,6 +21,8 @@ pub struct Hit {
     pub material: Material,
     /// The radiance the surface emits.
     pub emission: Colour,
+    /// Index of the object that was hit in the scene's list.
+    pub object: usize,
 }
 
 impl Hit {

@@ -30,7 +30,15 @@ mod camera;
 mod error;
 mod features;
 mod film;
+#[cfg(feature = "s3")]
+mod frame;
+#[cfg(feature = "s4")]
+mod fresnel;
 mod hit;
+#[cfg(feature = "s3")]
+mod indirect;
+#[cfg(feature = "s4")]
+mod lens;
 mod light;
 mod material;
 mod math;
@@ -40,17 +48,29 @@ mod png;
 mod radiance;
 mod ray;
 mod render;
+mod rng;
+#[cfg(feature = "s3")]
+mod sampling;
 mod scene;
 mod scene_file;
 mod sphere;
+#[cfg(feature = "s4")]
+mod sphere_light;
 mod stages;
+mod termination;
 mod values;
 
 pub use camera::*;
 pub use error::*;
 pub use features::*;
 pub use film::*;
+#[cfg(feature = "s3")]
+pub use frame::*;
+#[cfg(feature = "s4")]
+pub use fresnel::*;
 pub use hit::*;
+#[cfg(feature = "s4")]
+pub use lens::*;
 pub use light::*;
 pub use material::*;
 pub use math::*;
@@ -60,8 +80,14 @@ pub use png::*;
 pub use radiance::*;
 pub use ray::*;
 pub use render::*;
+pub use rng::*;
+#[cfg(feature = "s3")]
+pub use sampling::*;
 pub use scene::*;
 pub use scene_file::*;
 pub use sphere::*;
+#[cfg(feature = "s4")]
+pub use sphere_light::*;
 pub use stages::*;
+pub use termination::*;
 pub use values::*;

@@ -2,6 +2,16 @@
 
 use crate::math::{Colour, PI, Real, Vec3};
 
+/// The light source of a scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Light {
+    /// A point: hard shadows, direct lighting by Lambert's law.
+    Point(PointLight),
+    /// A glowing sphere: soft shadows.
+    #[cfg(feature = "s4")]
+    Sphere(crate::sphere_light::SphereLight),
+}
+
 /// A point light radiating `intensity` watts equally in every direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PointLight {

@@ -20,4 +20,10 @@ pub enum Material {
         /// Refractive index inside the object (the outside is air, index 1).
         index: crate::math::Real,
     },
+    /// Glass that also reflects part of the light, as the Fresnel equations say.
+    #[cfg(feature = "s4")]
+    FresnelGlass {
+        /// Refractive index inside the object.
+        index: crate::math::Real,
+    },
 }

@@ -35,11 +35,11 @@ impl Tracer<'_> {
     // ANCHOR: mirror
     /// Radiance seen in a mirror: that of the reflected ray, one bounce fewer.
     pub fn mirror(&mut self, ray: &Ray, hit: &Hit, bounces: u32) -> Colour {
-        if bounces == 0 {
+        let Some((next, weight)) = self.continue_path(bounces) else {
             return Colour::ZERO;
-        }
+        };
         let reflected = hit.spawn(reflect(ray.direction, hit.normal));
-        self.radiance(&reflected, bounces - 1)
+        weight * self.radiance(&reflected, next)
     }
     // ANCHOR_END: mirror
 
@@ -48,9 +48,9 @@ impl Tracer<'_> {
     /// glass, `eta = 1 / index`) or leaves (glass to air, `eta = index`) and bends;
     /// past the critical angle it is reflected instead.
     pub fn glass(&mut self, ray: &Ray, hit: &Hit, index: Real, bounces: u32) -> Colour {
-        if bounces == 0 {
+        let Some((next, weight)) = self.continue_path(bounces) else {
             return Colour::ZERO;
-        }
+        };
         let entering = ray.direction.dot(hit.normal) < 0.0;
         let (normal, eta) = if entering {
             (hit.normal, 1.0 / index)
@@ -59,7 +59,7 @@ impl Tracer<'_> {
         };
         let direction =
             refract(ray.direction, normal, eta).unwrap_or_else(|| reflect(ray.direction, normal));
-        self.radiance(&hit.spawn(direction), bounces - 1)
+        weight * self.radiance(&hit.spawn(direction), next)
     }
     // ANCHOR_END: glass
 }

@@ -2,9 +2,11 @@
 //! along a ray.
 
 use crate::hit::Hit;
+use crate::light::Light;
 use crate::material::Material;
 use crate::math::Colour;
 use crate::ray::Ray;
+use crate::rng::{PixelRng, pixel_rng};
 use crate::scene::Scene;
 
 /// Traces the rays of one pixel through a scene, counting them.
@@ -13,12 +15,18 @@ pub struct Tracer<'a> {
     pub scene: &'a Scene,
     /// Rays traced so far: camera, shadow and secondary rays.
     pub rays: u64,
+    /// The random generator of the pixel being rendered.
+    pub rng: PixelRng,
 }
 
 impl<'a> Tracer<'a> {
     /// A tracer over `scene` that has traced no ray yet.
     pub fn new(scene: &'a Scene) -> Self {
-        Self { scene, rays: 0 }
+        Self {
+            scene,
+            rays: 0,
+            rng: pixel_rng(scene.settings.seed, 0),
+        }
     }
 
     /// The nearest hit of `ray`, counted as one ray traced.
@@ -28,43 +36,79 @@ impl<'a> Tracer<'a> {
     }
 
     // ANCHOR: radiance
-    /// The radiance arriving along `ray`, with at most `bounces` more reflections or
-    /// refractions allowed: what the surface it hits emits, plus what it reflects. A
-    /// ray that leaves the scene sees black.
-    pub fn radiance(
-        &mut self,
-        ray: &Ray,
-        #[cfg_attr(not(feature = "s2"), expect(unused_variables))] bounces: u32,
-    ) -> Colour {
+    /// The radiance arriving along `ray`, with at most `bounces` more bounces
+    /// allowed: what the surface it hits emits, plus what it reflects. A ray that
+    /// leaves the scene sees black.
+    pub fn radiance(&mut self, ray: &Ray, bounces: u32) -> Colour {
+        self.radiance_skipping(ray, bounces, None)
+    }
+
+    /// [`Tracer::radiance`], but the emission of object `skip` is not counted: after
+    /// a diffuse bounce, the light that was already sampled directly.
+    pub fn radiance_skipping(&mut self, ray: &Ray, bounces: u32, skip: Option<usize>) -> Colour {
         let Some(hit) = self.trace(ray) else {
             return Colour::ZERO;
         };
         let reflected = match hit.material {
-            Material::Diffuse { albedo } => self.direct_light(&hit, albedo),
+            Material::Diffuse { albedo } => self.diffuse(&hit, albedo, bounces),
             #[cfg(feature = "s2")]
             Material::Mirror => self.mirror(ray, &hit, bounces),
             #[cfg(feature = "s2")]
             Material::Glass { index } => self.glass(ray, &hit, index, bounces),
+            #[cfg(feature = "s4")]
+            Material::FresnelGlass { index } => self.fresnel_glass(ray, &hit, index, bounces),
         };
-        hit.emission + reflected
+        let emitted = if skip == Some(hit.object) {
+            Colour::ZERO
+        } else {
+            hit.emission
+        };
+        emitted + reflected
     }
     // ANCHOR_END: radiance
 
-    // ANCHOR: direct_light
-    /// Light from the point light reflected by a diffuse surface (Lambert), zero if a
-    /// shadow ray finds an object between the point and the light.
-    pub fn direct_light(&mut self, hit: &Hit, albedo: Colour) -> Colour {
-        let Some(light) = self.scene.light else {
-            return Colour::ZERO;
-        };
-        if self.scene.settings.shadows {
-            let (shadow_ray, distance) = hit.spawn_towards(light.position);
-            self.rays += 1;
-            if self.scene.occluded(&shadow_ray, distance) {
-                return Colour::ZERO;
-            }
+    // ANCHOR: diffuse
+    /// Light reflected by a diffuse surface: direct light from the light source, plus
+    /// (from session 3, when the scene asks for it) light bounced off other surfaces.
+    pub fn diffuse(
+        &mut self,
+        hit: &Hit,
+        albedo: Colour,
+        #[cfg_attr(not(feature = "s3"), expect(unused_variables))] bounces: u32,
+    ) -> Colour {
+        let direct = self.direct_light(hit, albedo);
+        #[cfg(feature = "s3")]
+        if self.scene.settings.indirect {
+            return direct + self.indirect_light(hit, albedo, bounces);
         }
-        light.lambert(hit.point, hit.normal, albedo)
+        direct
+    }
+    // ANCHOR_END: diffuse
+
+    // ANCHOR: direct_light
+    /// Light from the light source reflected by a diffuse surface. A point light is
+    /// shaded by Lambert's law, zero if a shadow ray finds an object between the
+    /// point and the light; a sphere light is sampled when the scene asks for it.
+    pub fn direct_light(&mut self, hit: &Hit, albedo: Colour) -> Colour {
+        match self.scene.light {
+            None => Colour::ZERO,
+            Some(Light::Point(light)) => {
+                if self.scene.settings.shadows {
+                    let (shadow_ray, distance) = hit.spawn_towards(light.position);
+                    self.rays += 1;
+                    if self.scene.occluded(&shadow_ray, distance) {
+                        return Colour::ZERO;
+                    }
+                }
+                light.lambert(hit.point, hit.normal, albedo)
+            }
+            #[cfg(feature = "s4")]
+            Some(Light::Sphere(light)) if self.scene.settings.light_sampling => {
+                self.sample_light(&light, hit, albedo)
+            }
+            #[cfg(feature = "s4")]
+            Some(Light::Sphere(_)) => Colour::ZERO,
+        }
     }
     // ANCHOR_END: direct_light
 }

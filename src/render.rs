@@ -6,6 +6,7 @@ use rayon::prelude::*;
 use crate::film::Film;
 use crate::math::{Colour, Real};
 use crate::radiance::Tracer;
+use crate::rng::pixel_rng;
 use crate::scene::Scene;
 
 /// A finished render: the film and how many rays it took.
@@ -15,19 +16,55 @@ pub struct Render {
     pub film: Film,
     /// Rays traced: camera rays, shadow rays and secondary rays.
     pub rays: u64,
+    /// Samples whose radiance was NaN or infinite, left out of their pixel's mean.
+    pub dropped: u64,
+}
+
+/// The running mean of a pixel's samples. A sample that is not finite (a NaN from a
+/// degenerate computation, an infinity) is dropped and counted, rather than
+/// poisoning the pixel or being written as black.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SampleMean {
+    sum: Colour,
+    count: u32,
+    /// Samples dropped so far.
+    pub dropped: u32,
+}
+
+impl SampleMean {
+    /// Adds one sample's radiance.
+    pub fn add(&mut self, sample: Colour) {
+        if sample.is_finite() {
+            self.sum += sample;
+            self.count += 1;
+        } else {
+            self.dropped += 1;
+        }
+    }
+
+    /// The mean of the finite samples, black if there were none.
+    pub fn mean(&self) -> Colour {
+        if self.count == 0 {
+            Colour::ZERO
+        } else {
+            self.sum / self.count as Real
+        }
+    }
 }
 
 // ANCHOR: pixel
-/// The radiance of pixel (`row`, `column`): the mean of the scene's samples per pixel.
-pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Colour {
+/// The samples of pixel (`row`, `column`), averaged. The pixel's random generator is
+/// seeded from the scene's seed and the pixel's index alone.
+pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> SampleMean {
     let scene = tracer.scene;
-    let samples = scene.settings.samples;
-    let mut sum = Colour::ZERO;
-    for _ in 0..samples {
-        let ray = scene.camera.primary_ray(row, column);
-        sum += tracer.radiance(&ray, scene.settings.bounces);
+    let index = u64::from(row) * u64::from(scene.camera.width) + u64::from(column);
+    tracer.rng = pixel_rng(scene.settings.seed, index);
+    let mut mean = SampleMean::default();
+    for _ in 0..scene.settings.samples {
+        let ray = scene.camera.ray(row, column, &mut tracer.rng);
+        mean.add(tracer.radiance(&ray, scene.settings.bounces));
     }
-    sum / samples as Real
+    mean
 }
 // ANCHOR_END: pixel
 
@@ -39,18 +76,21 @@ pub fn render(scene: &Scene, progress: &ProgressBar) -> Render {
     let camera = scene.camera;
     let width = camera.width as usize;
     let mut pixels = vec![Colour::ZERO; width * camera.height as usize];
-    let rays = pixels
+    let (rays, dropped) = pixels
         .par_chunks_mut(width)
         .enumerate()
         .map(|(row, line)| {
             let mut tracer = Tracer::new(scene);
+            let mut dropped = 0;
             for (column, value) in line.iter_mut().enumerate() {
-                *value = pixel(&mut tracer, row as u32, column as u32);
+                let mean = pixel(&mut tracer, row as u32, column as u32);
+                *value = mean.mean();
+                dropped += u64::from(mean.dropped);
             }
             progress.inc(1);
-            tracer.rays
+            (tracer.rays, dropped)
         })
-        .sum();
+        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     Render {
         film: Film {
             width: camera.width,
@@ -58,6 +98,26 @@ pub fn render(scene: &Scene, progress: &ProgressBar) -> Render {
             pixels,
         },
         rays,
+        dropped,
     }
 }
 // ANCHOR_END: render
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn non_finite_samples_are_dropped_and_counted() {
+        let mut mean = SampleMean::default();
+        mean.add(Colour::splat(2.0));
+        mean.add(Colour::new(Real::NAN, 0.0, 0.0));
+        mean.add(Colour::splat(4.0));
+        mean.add(Colour::new(0.0, Real::INFINITY, 0.0));
+        assert_eq!(mean.mean(), Colour::splat(3.0));
+        assert_eq!(mean.dropped, 2);
+        let mut none = SampleMean::default();
+        none.add(Colour::splat(Real::NAN));
+        assert_eq!(none.mean(), Colour::ZERO);
+    }
+}

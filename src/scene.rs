@@ -2,10 +2,11 @@
 
 use crate::camera::Camera;
 use crate::hit::Hit;
-use crate::light::PointLight;
+use crate::light::Light;
 use crate::math::Real;
 use crate::ray::Ray;
 use crate::sphere::Sphere;
+use crate::termination::Termination;
 
 /// How a scene is rendered: the settings a scene file's `[render]` table holds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -18,8 +19,16 @@ pub struct Settings {
     pub seed: u64,
     /// Display gamma: an 8-bit pixel is `min(255, L^(1/gamma))`; 1 leaves radiance as is.
     pub gamma: Real,
-    /// Whether a shadow ray checks that the light is visible before shading.
+    /// Whether a shadow ray checks that the point light is visible before shading.
     pub shadows: bool,
+    /// Whether diffuse surfaces also reflect light arriving from other surfaces
+    /// (session 3), or only the light source's.
+    pub indirect: bool,
+    /// Whether a sphere light is sampled directly at each diffuse hit (session 4),
+    /// or found only by indirect rays that happen to hit it.
+    pub light_sampling: bool,
+    /// What happens to a path that runs out of bounces.
+    pub termination: Termination,
 }
 
 /// A scene ready to render.
@@ -29,8 +38,8 @@ pub struct Scene {
     pub camera: Camera,
     /// The objects.
     pub spheres: Vec<Sphere>,
-    /// The light, if the scene has one.
-    pub light: Option<PointLight>,
+    /// The light source, if the scene has one.
+    pub light: Option<Light>,
     /// Render settings.
     pub settings: Settings,
 }
@@ -47,8 +56,19 @@ impl Scene {
         if s.gamma != 1.0 {
             text += &format!(", gamma {}", s.gamma);
         }
-        if s.shadows {
-            text += ", shadows";
+        for (on, name) in [
+            (s.shadows, "shadows"),
+            (s.indirect, "indirect"),
+            (s.light_sampling, "light sampling"),
+            (
+                s.termination != Termination::BounceLimit,
+                "Russian roulette",
+            ),
+        ] {
+            if on {
+                text += ", ";
+                text += name;
+            }
         }
         text
     }
@@ -57,17 +77,28 @@ impl Scene {
     /// The nearest hit of `ray` among all objects: every sphere is tested and the
     /// smallest positive distance wins.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        let mut nearest: Option<(Real, &Sphere)> = None;
-        for sphere in &self.spheres {
+        let mut nearest: Option<(Real, usize)> = None;
+        for (i, sphere) in self.spheres.iter().enumerate() {
             if let Some(t) = sphere.intersect(ray)
                 && nearest.is_none_or(|(best, _)| t < best)
             {
-                nearest = Some((t, sphere));
+                nearest = Some((t, i));
             }
         }
-        nearest.map(|(t, sphere)| sphere.hit_at(ray, t))
+        nearest.map(|(t, i)| self.spheres[i].hit_at(ray, t, i))
     }
     // ANCHOR_END: nearest
+
+    /// The object whose emission is sampled directly at diffuse hits, if any: the
+    /// sphere light when the scene uses light sampling. Indirect rays that reach it
+    /// must not count its light a second time.
+    pub fn sampled_light(&self) -> Option<usize> {
+        match self.light {
+            #[cfg(feature = "s4")]
+            Some(Light::Sphere(light)) if self.settings.light_sampling => Some(light.object),
+            _ => None,
+        }
+    }
 
     /// Whether any object lies on `ray` closer than `distance`: the shadow-ray test.
     pub fn occluded(&self, ray: &Ray, distance: Real) -> bool {

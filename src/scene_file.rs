@@ -7,14 +7,16 @@ use std::path::Path;
 use serde::Deserialize;
 
 use crate::camera::Camera;
+use crate::camera::{Lens, PixelFilter};
 use crate::error::SceneError;
 use crate::features::{SESSION, feature_name};
-use crate::light::PointLight;
+use crate::light::{Light, PointLight};
 use crate::material::Material;
 use crate::math::Colour;
 use crate::scene::{Scene, Settings};
 use crate::sphere::Sphere;
-use crate::values::{Albedo, Degrees, NonNegative, Point, Positive, Rgb};
+use crate::termination::Termination;
+use crate::values::{Albedo, Degrees, NonNegative, Point, Positive, Probability, Rgb};
 
 /// The largest image, in pixels, a scene may ask for (8192 x 8192): beyond it the
 /// film alone would take gigabytes.
@@ -54,9 +56,18 @@ pub struct RenderSpec {
     pub seed: u64,
     /// Display gamma (absent: linear output).
     pub gamma: Option<Positive>,
-    /// Whether shadow rays are traced (default false).
+    /// Whether shadow rays are traced towards a point light (default false).
     #[serde(default)]
     pub shadows: bool,
+    /// Whether diffuse surfaces reflect indirect light (session 3; default false).
+    #[serde(default)]
+    pub indirect: bool,
+    /// Whether a sphere light is sampled directly (session 4; default false).
+    #[serde(default)]
+    pub light_sampling: bool,
+    /// Survival probability of Russian roulette past the bounce limit (session 4;
+    /// absent: paths stop at the limit).
+    pub russian_roulette: Option<Probability>,
 }
 
 fn one() -> NonZeroU32 {
@@ -75,16 +86,33 @@ pub struct CameraSpec {
     pub position: Point,
     /// Vertical field of view in degrees.
     pub fov: Degrees,
+    /// Standard deviation of the Gaussian jitter of camera rays, in pixels
+    /// (session 3; absent: rays through pixel centres).
+    pub antialiasing: Option<Positive>,
+    /// A thin lens (session 4; absent: a pinhole).
+    pub lens: Option<LensSpec>,
 }
 
-/// `[light]`: a point light.
+/// `lens = { aperture = ..., focus = ... }`: a thin lens.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LensSpec {
+    /// Radius of the lens.
+    pub aperture: Positive,
+    /// Distance from the eye to the sharp plane.
+    pub focus: Positive,
+}
+
+/// `[light]`: a point light, or with a radius a sphere light.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LightSpec {
-    /// Where the light is.
+    /// Where the light is (the centre of a sphere light).
     pub position: Point,
-    /// Its intensity `I`.
+    /// Its intensity `I`: the total power it emits.
     pub intensity: NonNegative,
+    /// Radius of a sphere light (session 4; absent: a point light).
+    pub radius: Option<Positive>,
 }
 
 /// One `[[spheres]]` entry.
@@ -112,6 +140,8 @@ pub enum MaterialSpec {
     Mirror,
     /// Glass with this refractive index (session 2).
     Glass(Positive),
+    /// Glass with Fresnel reflection (session 4).
+    FresnelGlass(Positive),
 }
 
 impl MaterialSpec {
@@ -121,6 +151,7 @@ impl MaterialSpec {
             Self::Diffuse(_) => (1, "a diffuse material"),
             Self::Mirror => (2, "a mirror material"),
             Self::Glass(_) => (2, "a glass material"),
+            Self::FresnelGlass(_) => (4, "a Fresnel glass material"),
         }
     }
 
@@ -133,6 +164,8 @@ impl MaterialSpec {
             Self::Mirror => Some(Material::Mirror),
             #[cfg(feature = "s2")]
             Self::Glass(Positive(index)) => Some(Material::Glass { index }),
+            #[cfg(feature = "s4")]
+            Self::FresnelGlass(Positive(index)) => Some(Material::FresnelGlass { index }),
             _ => None,
         }
     }
@@ -240,7 +273,20 @@ impl SceneFile {
         if r.shadows {
             needs("render.shadows", 2, "shadow rays")?;
         }
-        let mut spheres = Vec::with_capacity(self.spheres.len());
+        if r.indirect {
+            needs("render.indirect", 3, "indirect lighting")?;
+        }
+        if r.light_sampling {
+            needs("render.light_sampling", 4, "light sampling")?;
+            if self.light.as_ref().is_none_or(|l| l.radius.is_none()) {
+                return Err(SceneError::Inconsistent {
+                    path: path.to_owned(),
+                    key: "render.light_sampling".into(),
+                    message: "light sampling needs a sphere light: give [light] a radius".into(),
+                });
+            }
+        }
+        let mut spheres = Vec::with_capacity(self.spheres.len() + 1);
         for (i, s) in self.spheres.iter().enumerate() {
             let (session, what) = s.material.session();
             let material = s
@@ -254,24 +300,78 @@ impl SceneFile {
                 emission: s.emission.map_or(Colour::ZERO, |e| e.0),
             });
         }
+        #[allow(unreachable_patterns, reason = "every arm exists from session 4 on")]
+        let light = match self.light {
+            None => None,
+            Some(LightSpec {
+                position,
+                intensity,
+                radius: None,
+            }) => Some(Light::Point(PointLight {
+                position: position.0,
+                intensity: intensity.0,
+            })),
+            #[cfg(feature = "s4")]
+            Some(LightSpec {
+                position,
+                intensity,
+                radius: Some(Positive(radius)),
+            }) => {
+                let light = crate::sphere_light::SphereLight::new(
+                    position.0,
+                    radius,
+                    intensity.0,
+                    spheres.len(),
+                );
+                spheres.push(light.body());
+                Some(Light::Sphere(light))
+            }
+            Some(_) => return Err(missing("light.radius", 4, "a sphere light")),
+        };
+        #[allow(unreachable_patterns, reason = "every arm exists from session 3 on")]
+        let filter = match self.camera.antialiasing {
+            None => PixelFilter::Centre,
+            #[cfg(feature = "s3")]
+            Some(Positive(sigma)) => PixelFilter::Gaussian { sigma },
+            Some(_) => return Err(missing("camera.antialiasing", 3, "antialiasing")),
+        };
+        #[allow(unreachable_patterns, reason = "every arm exists from session 4 on")]
+        let lens = match self.camera.lens {
+            None => Lens::Pinhole,
+            #[cfg(feature = "s4")]
+            Some(LensSpec { aperture, focus }) => Lens::Thin(crate::lens::ThinLens {
+                aperture: aperture.0,
+                focus: focus.0,
+            }),
+            Some(_) => return Err(missing("camera.lens", 4, "a thin lens")),
+        };
+        #[allow(unreachable_patterns, reason = "every arm exists from session 4 on")]
+        let termination = match r.russian_roulette {
+            None => Termination::BounceLimit,
+            #[cfg(feature = "s4")]
+            Some(Probability(survival)) => Termination::RussianRoulette { survival },
+            Some(_) => return Err(missing("render.russian_roulette", 4, "Russian roulette")),
+        };
         Ok(Scene {
             camera: Camera {
                 position: self.camera.position.0,
                 fov: self.camera.fov.0.to_radians(),
                 width: r.width.get(),
                 height: r.height.get(),
+                filter,
+                lens,
             },
             spheres,
-            light: self.light.map(|l| PointLight {
-                position: l.position.0,
-                intensity: l.intensity.0,
-            }),
+            light,
             settings: Settings {
                 samples: r.samples.get(),
                 bounces: r.bounces,
                 seed: r.seed,
                 gamma: r.gamma.map_or(1.0, |g| g.0),
                 shadows: r.shadows,
+                indirect: r.indirect,
+                light_sampling: r.light_sampling,
+                termination,
             },
         })
     }

@@ -56,10 +56,11 @@ impl Sphere {
     }
     // ANCHOR_END: intersect
 
-    /// The hit record at distance `t` along `ray`. The point is projected back onto
+    /// The hit record at distance `t` along `ray`, for the sphere numbered `object`
+    /// in the scene. The point is projected back onto
     /// the sphere, `c + r (p - c) / |p - c|`, so that its error depends on the size
     /// and position of the sphere only, not on how far the ray travelled.
-    pub fn hit_at(&self, ray: &Ray, t: Real) -> Hit {
+    pub fn hit_at(&self, ray: &Ray, t: Real, object: usize) -> Hit {
         let radial = ray.at(t) - self.centre;
         let normal = radial / radial.length();
         let point = self.centre + self.radius * normal;
@@ -70,6 +71,7 @@ impl Sphere {
             error: error_bound(7) * (self.centre.abs() + (self.radius * normal).abs()),
             material: self.material,
             emission: self.emission,
+            object,
         }
     }
 }
@@ -174,7 +176,7 @@ mod tests {
     fn hit_point_lies_on_the_sphere_within_its_error_bound() {
         let s = sphere(Vec3::new(3.0, -1000.0, 7.0), 990.0);
         let ray = Ray::new(Vec3::new(0.0, 0.0, 55.0), Vec3::new(0.3, -1.0, -0.8));
-        let hit = s.hit_at(&ray, s.intersect(&ray).unwrap());
+        let hit = s.hit_at(&ray, s.intersect(&ray).unwrap(), 0);
         let off = ((hit.point - s.centre).length() - s.radius).abs();
         assert!(off <= hit.error.length(), "{off} > {}", hit.error.length());
         assert!((hit.normal.length() - 1.0).abs() < 1e-15);
@@ -194,7 +196,7 @@ mod tests {
                 target - Vec3::new(0.0, 30.0, 20.0),
             );
             let Some(t) = s.intersect(&ray) else { continue };
-            let hit = s.hit_at(&ray, t);
+            let hit = s.hit_at(&ray, t, 0);
             let reflected = hit.spawn(crate::math::Vec3::new(a.sin(), 1.0, a.cos()));
             if s.intersect(&reflected).is_some() {
                 self_hits += 1;

@@ -44,6 +44,23 @@ impl TryFrom<Real> for NonNegative {
     }
 }
 
+/// A probability in `(0, 1]` (the survival probability of Russian roulette).
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "Real")]
+pub struct Probability(pub Real);
+
+impl TryFrom<Real> for Probability {
+    type Error = String;
+    fn try_from(v: Real) -> Result<Self, String> {
+        match finite(v)? {
+            v if v > 0.0 && v <= 1.0 => Ok(Self(v)),
+            v => Err(format!(
+                "expected a probability above 0 and at most 1, found {v}"
+            )),
+        }
+    }
+}
+
 /// A field of view in degrees, strictly between 0 and 180.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
 #[serde(try_from = "Real")]
@@ -119,6 +136,8 @@ mod tests {
         assert!(NonNegative::try_from(-1e-300).is_err());
         assert!(NonNegative::try_from(Real::INFINITY).is_err());
         assert!(Degrees::try_from(180.0).is_err());
+        assert!(Probability::try_from(0.0).is_err());
+        assert_eq!(Probability::try_from(1.0), Ok(Probability(1.0)));
         assert!(Point::try_from([0.0, Real::NEG_INFINITY, 0.0]).is_err());
         assert!(Rgb::try_from([0.0, -1.0, 0.0]).is_err());
         assert!(Albedo::try_from([0.5, 1.5, 0.0]).is_err());

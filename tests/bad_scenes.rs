@@ -122,7 +122,7 @@ fn unknown_material() {
     assert_eq!(
         error_with("material", "material = \"chrome\""),
         "room.toml:17:12: key `spheres[0].material`: unknown variant `chrome`, expected one of \
-         `diffuse`, `mirror`, `glass`"
+         `diffuse`, `mirror`, `glass`, `fresnel-glass`"
     );
 }
 
