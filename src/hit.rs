@@ -27,7 +27,7 @@ pub struct Hit {
 
 impl Hit {
     // ANCHOR: spawn
-    /// A ray leaving the hit point towards `direction`, its origin pushed off the
+    /// A ray leaving the hit point along the unit vector `direction`, its origin pushed off the
     /// surface just far enough to clear the point's rounding error (pbrt-v4,
     /// section 6.8.6): along the normal by `d = |n| . error`, to the side the ray
     /// leaves by, then rounded one more float away. The offset scales with the
@@ -54,14 +54,14 @@ impl Hit {
             away(pushed.y, offset.y),
             away(pushed.z, offset.z),
         );
-        Ray::new(origin, direction)
+        Ray { origin, direction }
     }
     // ANCHOR_END: spawn
 
     /// A ray from the hit point towards `target`, with the distance to the target
     /// measured from the ray's (offset) origin; used for shadow rays.
     pub fn spawn_towards(&self, target: Vec3) -> (Ray, Real) {
-        let ray = self.spawn(target - self.point);
+        let ray = self.spawn((target - self.point).normalize());
         (ray, ray.origin.distance(target))
     }
 }

@@ -12,12 +12,14 @@ use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::{Overrides, Scene, SceneError, Stage, encode_png, render, stages};
 
 /// Ray tracing, one course session at a time. With no command, renders the last
-/// stage of this build into `out/`.
+/// stage of this build into `out/` (the render options apply to it).
 #[derive(Parser)]
-#[command(version, about)]
+#[command(version, about, args_conflicts_with_subcommands = true)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    #[command(flatten)]
+    options: RenderArgs,
 }
 
 #[derive(Subcommand)]
@@ -37,6 +39,24 @@ enum Command {
     S2 {
         /// The stage.
         #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(2)))]
+        stage: String,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render a stage of session 3.
+    #[cfg(feature = "s3")]
+    S3 {
+        /// The stage.
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(3)))]
+        stage: String,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render a stage of session 4.
+    #[cfg(feature = "s4")]
+    S4 {
+        /// The stage.
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(4)))]
         stage: String,
         #[command(flatten)]
         options: RenderArgs,
@@ -141,7 +161,7 @@ fn run(cli: Cli) -> Result<(), Failure> {
     match cli.command {
         None => {
             let stage = stages().last().expect("every build has session 1's stages");
-            render_stage(stage, &RenderArgs::default())
+            render_stage(stage, &cli.options)
         }
         Some(Command::List) => {
             list();
@@ -150,6 +170,10 @@ fn run(cli: Cli) -> Result<(), Failure> {
         Some(Command::S1 { stage, options }) => render_named(1, &stage, &options),
         #[cfg(feature = "s2")]
         Some(Command::S2 { stage, options }) => render_named(2, &stage, &options),
+        #[cfg(feature = "s3")]
+        Some(Command::S3 { stage, options }) => render_named(3, &stage, &options),
+        #[cfg(feature = "s4")]
+        Some(Command::S4 { stage, options }) => render_named(4, &stage, &options),
         Some(Command::Render { scene, options }) => {
             let loaded = raycourse::load_scene(&scene, &options.overrides())?;
             let name = scene
@@ -181,7 +205,7 @@ fn list() {
         println!(
             "{:<8} {:<7} {:<15} {:<58} {settings}",
             format!("s{}", stage.session),
-            stage.figure,
+            stage.figure.map_or("-".into(), |f| f.to_string()),
             stage.name,
             stage.title
         );
@@ -231,8 +255,12 @@ fn render_to_file(
         path: out.clone(),
         source,
     })?;
+    let dropped = match result.dropped {
+        0 => String::new(),
+        n => format!(", {n} non-finite samples dropped"),
+    };
     println!(
-        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads -> {}",
+        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{dropped} -> {}",
         scene.summary(),
         seconds,
         result.rays,

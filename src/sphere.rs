@@ -31,15 +31,19 @@ impl Sphere {
     /// `r^2 - |f - (f.d) d|^2`, the squared half-chord, without that cancellation.
     /// The roots then come from `q = -(f.d + sign(f.d) sqrt(disc))` as `c / q` and `q`,
     /// so the smaller one is not computed as a difference of nearly equal numbers either.
+    #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Real> {
         let f = ray.origin - self.centre;
         let h = f.dot(ray.direction);
+        let c = f.length_squared() - self.radius * self.radius;
+        if c > 0.0 && h > 0.0 {
+            return None; // outside, and moving away
+        }
         let chord = f - h * ray.direction;
         let discriminant = self.radius * self.radius - chord.length_squared();
         if discriminant < 0.0 {
             return None;
         }
-        let c = f.length_squared() - self.radius * self.radius;
         let q = -(h + discriminant.sqrt().copysign(h));
         if q == 0.0 {
             return None;
@@ -197,11 +201,11 @@ mod tests {
             );
             let Some(t) = s.intersect(&ray) else { continue };
             let hit = s.hit_at(&ray, t, 0);
-            let reflected = hit.spawn(crate::math::Vec3::new(a.sin(), 1.0, a.cos()));
+            let reflected = hit.spawn(Vec3::new(a.sin(), 1.0, a.cos()).normalize());
             if s.intersect(&reflected).is_some() {
                 self_hits += 1;
             }
-            let inward = hit.spawn(-hit.normal + Vec3::new(0.1 * a.cos(), 0.0, 0.1));
+            let inward = hit.spawn((-hit.normal + Vec3::new(0.1 * a.cos(), 0.0, 0.1)).normalize());
             if s.intersect(&inward).is_some_and(|t| t < 1.0) {
                 self_hits += 1;
             }

@@ -14,8 +14,9 @@ use crate::scene_file::{Overrides, parse_scene};
 pub struct Stage {
     /// The session that teaches it, 1 to 7.
     pub session: u32,
-    /// The figure of the course it reproduces.
-    pub figure: u32,
+    /// The figure of the course it reproduces; `None` for an extra stage that goes
+    /// beyond the course's figures.
+    pub figure: Option<u32>,
     /// Its name on the command line, such as `glass`.
     pub name: &'static str,
     /// What the stage adds, in a few words.
@@ -27,7 +28,7 @@ pub struct Stage {
 }
 
 macro_rules! stage {
-    ($session:literal, $figure:literal, $name:literal, $title:literal) => {
+    ($session:literal, $figure:expr, $name:literal, $title:literal) => {
         Stage {
             session: $session,
             figure: $figure,
@@ -43,20 +44,62 @@ macro_rules! stage {
 const ALL: &[Stage] = &[
     stage!(
         1,
-        1,
+        Some(1),
         "white-disk",
-        "camera rays and a sphere: white where a ray hits"
+        "camera rays and a sphere: white where hit"
     ),
-    stage!(1, 2, "shading", "Lambert shading under a point light"),
-    stage!(1, 3, "spheres", "several spheres, the nearest hit wins"),
-    stage!(2, 4, "gamma", "gamma correction"),
-    stage!(2, 5, "shadows", "shadow rays"),
-    stage!(2, 6, "mirror", "a mirror sphere: recursive radiance"),
+    stage!(1, Some(2), "shading", "Lambert shading under a point light"),
+    stage!(
+        1,
+        Some(3),
+        "spheres",
+        "several spheres, the nearest hit wins"
+    ),
+    stage!(2, Some(4), "gamma", "gamma correction"),
+    stage!(2, Some(5), "shadows", "shadow rays"),
+    stage!(2, Some(6), "mirror", "a mirror sphere: recursive radiance"),
     stage!(
         2,
-        7,
+        Some(7),
         "glass",
-        "a glass sphere: refraction and total internal reflection"
+        "glass: refraction, total internal reflection"
+    ),
+    stage!(
+        3,
+        Some(8),
+        "indirect",
+        "indirect lighting by Monte Carlo path tracing"
+    ),
+    stage!(
+        3,
+        Some(9),
+        "antialiasing",
+        "Gaussian jitter of camera rays (Box-Muller)"
+    ),
+    stage!(
+        4,
+        Some(10),
+        "soft-shadows",
+        "a sphere light found by indirect rays only"
+    ),
+    stage!(
+        4,
+        Some(11),
+        "light-sampling",
+        "direct light by sampling the light sphere"
+    ),
+    stage!(
+        4,
+        Some(12),
+        "depth-of-field",
+        "a thin lens: aperture and focus distance"
+    ),
+    stage!(4, None, "fresnel", "extra: glass with Fresnel reflection"),
+    stage!(
+        4,
+        None,
+        "russian-roulette",
+        "extra: Russian roulette past the bounce limit"
     ),
 ];
 

@@ -143,9 +143,13 @@ fn a_scene_file_renders_into_out() {
 #[test]
 fn no_arguments_renders_the_last_stage_of_the_build() {
     let dir = tempfile::tempdir().unwrap();
-    let out = run(&[], dir.path());
+    let out = run(
+        &["--width", "16", "--height", "8", "--spp", "2"],
+        dir.path(),
+    );
     assert!(out.status.success(), "{}", text(&out.stderr));
     let last = stages().last().unwrap().name;
+    assert!(text(&out.stdout).starts_with(&format!("{last}: 16x8, ")));
     let image = image::open(dir.path().join(format!("out/{last}.png"))).unwrap();
-    assert_eq!((image.width(), image.height()), (512, 512));
+    assert_eq!((image.width(), image.height()), (16, 8));
 }

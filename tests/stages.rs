@@ -9,10 +9,15 @@ use raycourse::{Overrides, Stage, encode_png, render, stages};
 
 const SIZE: NonZeroU32 = NonZeroU32::new(128).unwrap();
 
+/// At most this many samples per pixel: enough to see what a stage does.
+const SAMPLES: u32 = 4;
+
 fn render_png(stage: &Stage, threads: usize) -> Vec<u8> {
+    let course = stage.scene(&Overrides::default()).unwrap().settings.samples;
     let overrides = Overrides {
         width: Some(SIZE),
         height: Some(SIZE),
+        samples: NonZeroU32::new(course.min(SAMPLES)),
         ..Overrides::default()
     };
     let scene = stage
