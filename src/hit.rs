@@ -23,6 +23,10 @@ pub struct Hit {
     pub emission: Colour,
     /// Index of the object that was hit in the scene's list.
     pub object: usize,
+    /// Whether the ray came from outside the object. Decided by where the ray
+    /// started, not by the sign of `direction . normal`, which rounding makes
+    /// unreliable for rays that graze the surface.
+    pub from_outside: bool,
 }
 
 impl Hit {
@@ -57,6 +61,18 @@ impl Hit {
         Ray { origin, direction }
     }
     // ANCHOR_END: spawn
+
+    /// The hit with its normal turned towards the side the ray came from. A diffuse
+    /// surface is lit on whichever side a ray meets it, such as the inside of an
+    /// enclosing sphere.
+    pub fn facing_the_ray(&self) -> Hit {
+        let normal = if self.from_outside {
+            self.normal
+        } else {
+            -self.normal
+        };
+        Hit { normal, ..*self }
+    }
 
     /// A ray from the hit point towards `target`, with the distance to the target
     /// measured from the ray's (offset) origin; used for shadow rays.

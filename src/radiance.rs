@@ -50,7 +50,7 @@ impl<'a> Tracer<'a> {
             return Colour::ZERO;
         };
         let reflected = match hit.material {
-            Material::Diffuse { albedo } => self.diffuse(&hit, albedo, bounces),
+            Material::Diffuse { albedo } => self.diffuse(&hit.facing_the_ray(), albedo, bounces),
             #[cfg(feature = "s2")]
             Material::Mirror => self.mirror(ray, &hit, bounces),
             #[cfg(feature = "s2")]

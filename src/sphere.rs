@@ -76,6 +76,7 @@ impl Sphere {
             material: self.material,
             emission: self.emission,
             object,
+            from_outside: (ray.origin - self.centre).length_squared() > self.radius * self.radius,
         }
     }
 }
