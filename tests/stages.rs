@@ -5,14 +5,14 @@
 use std::num::NonZeroU32;
 
 use indicatif::ProgressBar;
-use raycourse::{Overrides, Stage, encode_png, render, stages};
+use raycourse::{Overrides, Real, Render, Stage, encode_png, render, stages};
 
 const SIZE: NonZeroU32 = NonZeroU32::new(128).unwrap();
 
 /// At most this many samples per pixel: enough to see what a stage does.
 const SAMPLES: u32 = 4;
 
-fn render_png(stage: &Stage, threads: usize) -> Vec<u8> {
+fn render_small(stage: &Stage, threads: usize) -> (Render, Real) {
     let course = stage.scene(&Overrides::default()).unwrap().settings.samples;
     let overrides = Overrides {
         width: Some(SIZE),
@@ -28,7 +28,25 @@ fn render_png(stage: &Stage, threads: usize) -> Vec<u8> {
         .build()
         .unwrap();
     let result = pool.install(|| render(&scene, &ProgressBar::hidden()));
-    encode_png(&result.film, scene.settings.gamma)
+    (result, scene.settings.gamma)
+}
+
+fn render_png(stage: &Stage, threads: usize) -> Vec<u8> {
+    let (result, gamma) = render_small(stage, threads);
+    encode_png(&result.film, gamma)
+}
+
+#[test]
+fn no_stage_lets_a_non_finite_value_reach_the_film() {
+    for stage in stages() {
+        let (result, _) = render_small(stage, 2);
+        assert!(
+            result.film.pixels.iter().all(|c| c.is_finite()),
+            "{}",
+            stage.name
+        );
+        assert_eq!(result.dropped, 0, "{}", stage.name);
+    }
 }
 
 #[test]
