@@ -15,6 +15,7 @@ pub struct Frame {
 }
 
 impl Frame {
+    // ANCHOR: frame
     /// A frame whose `z` axis is the unit vector `n`, built without branches on the
     /// normal's direction (Duff et al., "Building an Orthonormal Basis, Revisited",
     /// JCGT 2017), so it is continuous and exact to rounding for every `n`.
@@ -28,6 +29,7 @@ impl Frame {
             n,
         }
     }
+    // ANCHOR_END: frame
 
     /// The world direction of local coordinates `(x, y, z)`: `x T1 + y T2 + z N`.
     pub fn to_world(&self, local: Vec3) -> Vec3 {

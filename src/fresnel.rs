@@ -2,7 +2,7 @@
 
 use crate::hit::Hit;
 use crate::math::{Colour, Real};
-use crate::optics::{reflect, refract};
+use crate::optics::{interface, reflect, refract};
 use crate::radiance::Tracer;
 use crate::ray::Ray;
 use crate::rng::uniform;
@@ -36,12 +36,7 @@ impl Tracer<'_> {
         let Some((next, weight)) = self.continue_path(bounces) else {
             return Colour::ZERO;
         };
-        let entering = ray.direction.dot(hit.normal) < 0.0;
-        let (normal, eta) = if entering {
-            (hit.normal, 1.0 / index)
-        } else {
-            (-hit.normal, index)
-        };
+        let (normal, eta) = interface(ray.direction, hit.normal, index);
         let cos_i = -ray.direction.dot(normal);
         let direction = match refract(ray.direction, normal, eta) {
             Some(t) if uniform(&mut self.rng) >= fresnel_reflectance(cos_i, eta) => t,

@@ -31,6 +31,19 @@ pub fn refract(incident: Vec3, normal: Vec3, eta: Real) -> Option<Vec3> {
 }
 // ANCHOR_END: refract
 
+// ANCHOR: interface
+/// The boundary of an object of refractive `index` in air, as the ray meeting it
+/// along `direction` sees it: the normal on the ray's side, and `eta = n1 / n2`,
+/// `1 / index` entering (air to glass) or `index` leaving (glass to air).
+pub fn interface(direction: Vec3, outward_normal: Vec3, index: Real) -> (Vec3, Real) {
+    if direction.dot(outward_normal) < 0.0 {
+        (outward_normal, 1.0 / index)
+    } else {
+        (-outward_normal, index)
+    }
+}
+// ANCHOR_END: interface
+
 impl Tracer<'_> {
     // ANCHOR: mirror
     /// Radiance seen in a mirror: that of the reflected ray, one bounce fewer.
@@ -44,19 +57,13 @@ impl Tracer<'_> {
     // ANCHOR_END: mirror
 
     // ANCHOR: glass
-    /// Radiance seen through glass of refractive `index`: the ray enters (air to
-    /// glass, `eta = 1 / index`) or leaves (glass to air, `eta = index`) and bends;
-    /// past the critical angle it is reflected instead.
+    /// Radiance seen through glass of refractive `index`: the ray enters or leaves
+    /// and bends; past the critical angle it is reflected instead.
     pub fn glass(&mut self, ray: &Ray, hit: &Hit, index: Real, bounces: u32) -> Colour {
         let Some((next, weight)) = self.continue_path(bounces) else {
             return Colour::ZERO;
         };
-        let entering = ray.direction.dot(hit.normal) < 0.0;
-        let (normal, eta) = if entering {
-            (hit.normal, 1.0 / index)
-        } else {
-            (-hit.normal, index)
-        };
+        let (normal, eta) = interface(ray.direction, hit.normal, index);
         let direction =
             refract(ray.direction, normal, eta).unwrap_or_else(|| reflect(ray.direction, normal));
         weight * self.radiance(&hit.spawn(direction), next)

@@ -7,6 +7,7 @@ use crate::math::Real;
 /// The random generator of one pixel: a small, fast PCG (64-bit output, 128-bit state).
 pub type PixelRng = rand_pcg::Pcg64Mcg;
 
+// ANCHOR: pixel_rng
 /// The generator of pixel number `pixel` (row-major from the top-left) for the scene
 /// seed `seed`. Its stream depends on nothing else, so whichever thread renders the
 /// pixel draws the same numbers. The two numbers are mixed by SplitMix64 so that
@@ -14,6 +15,7 @@ pub type PixelRng = rand_pcg::Pcg64Mcg;
 pub fn pixel_rng(seed: u64, pixel: u64) -> PixelRng {
     PixelRng::seed_from_u64(splitmix64(seed ^ splitmix64(pixel)))
 }
+// ANCHOR_END: pixel_rng
 
 /// A number drawn uniformly from `[0, 1)`.
 pub fn uniform(rng: &mut PixelRng) -> Real {

@@ -45,6 +45,7 @@ pub fn cone_pdf(cos_theta: Real, cos_max: Real) -> Real {
 // ANCHOR_END: cone
 
 impl SphereLight {
+    // ANCHOR: sphere_light
     /// A light of total power `intensity` at `centre`, whose body will be the scene's
     /// sphere number `object`.
     pub fn new(centre: Vec3, radius: Real, intensity: Real, object: usize) -> Self {
@@ -67,6 +68,7 @@ impl SphereLight {
             emission: self.emission,
         }
     }
+    // ANCHOR_END: sphere_light
 
     /// The cosine of the half-angle under which the light is seen from `point`,
     /// `sqrt(1 - R^2 / d^2)`, or `None` from inside the light.
