@@ -272,6 +272,15 @@ impl SceneFile {
         }
         if r.shadows {
             needs("render.shadows", 2, "shadow rays")?;
+            if self.light.as_ref().is_some_and(|l| l.radius.is_some()) {
+                return Err(SceneError::Inconsistent {
+                    path: path.to_owned(),
+                    key: "render.shadows".into(),
+                    message: "shadow rays are for a point light; a sphere light's shadows \
+                              come from light_sampling or indirect rays"
+                        .into(),
+                });
+            }
         }
         if r.indirect {
             needs("render.indirect", 3, "indirect lighting")?;

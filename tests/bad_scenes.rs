@@ -190,3 +190,69 @@ fn later_session_settings_name_their_feature() {
         );
     }
 }
+
+#[test]
+fn light_sampling_needs_a_sphere_light() {
+    let text = GOOD.replace("height = 48", "height = 48\nlight_sampling = true");
+    let err = parse_scene(&text, Path::new("room.toml"), &Overrides::default()).unwrap_err();
+    let expected = if SESSION >= 4 {
+        "room.toml: key `render.light_sampling`: light sampling needs a sphere light: give \
+         [light] a radius"
+    } else {
+        "room.toml: key `render.light_sampling`: light sampling needs feature s4: \
+         cargo run --features s4 -- ..."
+    };
+    assert_eq!(err.to_string(), expected);
+}
+
+#[test]
+fn a_sphere_light_needs_session_four_and_no_shadow_rays() {
+    let text = GOOD.replace("intensity = 2e7", "intensity = 2e7\nradius = 5");
+    let result = parse_scene(&text, Path::new("room.toml"), &Overrides::default());
+    if SESSION >= 4 {
+        assert_eq!(
+            result.unwrap().spheres.len(),
+            2,
+            "the light's body is a sphere"
+        );
+        let text = text.replace("height = 48", "height = 48\nshadows = true");
+        let err = parse_scene(&text, Path::new("room.toml"), &Overrides::default()).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "room.toml: key `render.shadows`: shadow rays are for a point light; a sphere \
+             light's shadows come from light_sampling or indirect rays"
+        );
+    } else {
+        assert_eq!(
+            result.unwrap_err().to_string(),
+            "room.toml: key `light.radius`: a sphere light needs feature s4: \
+             cargo run --features s4 -- ..."
+        );
+    }
+}
+
+#[test]
+fn antialiasing_needs_session_three() {
+    let text = GOOD.replace("fov = 60", "fov = 60\nantialiasing = 0.5");
+    let result = parse_scene(&text, Path::new("room.toml"), &Overrides::default());
+    if SESSION >= 3 {
+        assert!(result.is_ok());
+    } else {
+        assert_eq!(
+            result.unwrap_err().to_string(),
+            "room.toml: key `camera.antialiasing`: antialiasing needs feature s3: \
+             cargo run --features s3 -- ..."
+        );
+    }
+}
+
+#[test]
+fn russian_roulette_survival_is_a_probability() {
+    let text = GOOD.replace("height = 48", "height = 48\nrussian_roulette = 1.5");
+    let err = parse_scene(&text, Path::new("room.toml"), &Overrides::default()).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "room.toml:5:20: key `render.russian_roulette`: expected a probability above 0 and at \
+         most 1, found 1.5"
+    );
+}
