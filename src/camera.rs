@@ -28,7 +28,36 @@ pub enum Lens {
     Thin(crate::lens::ThinLens),
 }
 
-/// A camera at `position`, looking down `-z` with `y` up.
+/// Which way the camera looks.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Orientation {
+    /// Down `-z`, with `y` up: the camera of the first six sessions.
+    Fixed,
+    /// Along any direction: camera-space `x`, `y`, `z` become `right`, `up` and
+    /// `back` (minus the viewing direction).
+    #[cfg(feature = "s7")]
+    Aimed {
+        /// Unit vector to the right of the image.
+        right: Vec3,
+        /// Unit vector to the top of the image.
+        up: Vec3,
+        /// Unit vector from the scene towards the eye.
+        back: Vec3,
+    },
+}
+
+impl Orientation {
+    /// The world vector of camera-space `v`.
+    pub fn to_world(&self, v: Vec3) -> Vec3 {
+        match *self {
+            Orientation::Fixed => v,
+            #[cfg(feature = "s7")]
+            Orientation::Aimed { right, up, back } => v.x * right + v.y * up + v.z * back,
+        }
+    }
+}
+
+/// A camera at `position`, looking down `-z` with `y` up unless aimed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera {
     /// The eye: where every camera ray starts.
@@ -43,6 +72,8 @@ pub struct Camera {
     pub filter: PixelFilter,
     /// Where rays start.
     pub lens: Lens,
+    /// Which way it looks.
+    pub orientation: Orientation,
 }
 
 impl Camera {
@@ -82,11 +113,13 @@ impl Camera {
             }
         };
         let direction = self.pixel_direction(row, column) + Vec3::new(dx, dy, 0.0);
-        match self.lens {
-            Lens::Pinhole => Ray::new(self.position, direction),
+        let (start, direction) = match self.lens {
+            Lens::Pinhole => (Vec3::ZERO, direction),
             #[cfg(feature = "s4")]
-            Lens::Thin(lens) => lens.ray(self.position, direction, rng),
-        }
+            Lens::Thin(lens) => lens.ray(direction, rng),
+        };
+        let o = &self.orientation;
+        Ray::new(self.position + o.to_world(start), o.to_world(direction))
     }
     // ANCHOR_END: camera_ray
 }
@@ -103,6 +136,7 @@ mod tests {
             height: 256,
             filter: PixelFilter::Centre,
             lens: Lens::Pinhole,
+            orientation: Orientation::Fixed,
         }
     }
 

@@ -38,6 +38,16 @@ pub enum SceneError {
         /// What was wrong and what was expected.
         message: String,
     },
+    /// A file the scene refers to (a mesh, a texture) cannot be used.
+    #[error("{}: {message} (referred to by {})", file.display(), scene.display())]
+    Asset {
+        /// The scene file.
+        scene: PathBuf,
+        /// The mesh or texture file.
+        file: PathBuf,
+        /// What is wrong with it.
+        message: String,
+    },
     /// The scene asks for something that a later course session brings.
     #[error(
         "{}: key `{key}`: {what} needs feature {feature}: cargo run --features {feature} -- ...",

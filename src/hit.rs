@@ -12,8 +12,12 @@ pub struct Hit {
     pub t: Real,
     /// The hit point.
     pub point: Vec3,
-    /// Unit normal of the surface, pointing out of the object.
+    /// Unit normal of the surface, pointing out of the object: the geometry's own,
+    /// which decides on which side a new ray starts.
     pub normal: Vec3,
+    /// Unit normal used for shading: the geometric one, or an interpolated one on
+    /// smooth meshes.
+    pub shading_normal: Vec3,
     /// A bound on the rounding error of each coordinate of `point`: the true surface
     /// point lies in the box `point ± error`.
     pub error: Vec3,
@@ -66,12 +70,12 @@ impl Hit {
     /// surface is lit on whichever side a ray meets it, such as the inside of an
     /// enclosing sphere.
     pub fn facing_the_ray(&self) -> Hit {
-        let normal = if self.from_outside {
-            self.normal
-        } else {
-            -self.normal
-        };
-        Hit { normal, ..*self }
+        let side = if self.from_outside { 1.0 } else { -1.0 };
+        Hit {
+            normal: side * self.normal,
+            shading_normal: side * self.shading_normal,
+            ..*self
+        }
     }
 
     /// A ray from the hit point towards `target`, with the distance to the target

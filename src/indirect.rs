@@ -19,7 +19,7 @@ impl Tracer<'_> {
             return Colour::ZERO;
         };
         let local = sample_cosine_hemisphere(uniform(&mut self.rng), uniform(&mut self.rng));
-        let direction = Frame::new(hit.normal).to_world(local);
+        let direction = Frame::new(hit.shading_normal).to_world(local);
         let skip = self.scene.sampled_light();
         weight * albedo * self.radiance_skipping(&hit.spawn(direction), next, skip)
     }

@@ -1,7 +1,6 @@
 //! The thin lens: depth of field from an aperture of finite size.
 
 use crate::math::{PI, Real, Vec3};
-use crate::ray::Ray;
 use crate::rng::{PixelRng, uniform};
 
 // ANCHOR: disk
@@ -38,15 +37,16 @@ pub struct ThinLens {
 
 impl ThinLens {
     // ANCHOR: thin_lens
-    /// The camera ray through the lens for a pinhole ray from `eye` along
-    /// `direction` (which points down `-z`): the pinhole ray meets the focus plane
-    /// `z = eye.z - focus` at a point every ray through the lens passes through, so
-    /// that plane is sharp; the ray starts at a random point of the aperture disk.
-    pub fn ray(&self, eye: Vec3, direction: Vec3, rng: &mut PixelRng) -> Ray {
-        let focus_point = eye + direction * (self.focus / -direction.z);
+    /// The start and direction, in camera space (eye at the origin, looking down
+    /// `-z`), of the ray through the lens for the pinhole direction `direction`: the
+    /// pinhole ray meets the focus plane `z = -focus` at a point every ray through
+    /// the lens passes through, so that plane is sharp; the ray starts at a random
+    /// point of the aperture disk.
+    pub fn ray(&self, direction: Vec3, rng: &mut PixelRng) -> (Vec3, Vec3) {
+        let focus_point = direction * (self.focus / -direction.z);
         let (x, y) = sample_disk(uniform(rng), uniform(rng));
-        let origin = eye + Vec3::new(x, y, 0.0) * self.aperture;
-        Ray::new(origin, focus_point - origin)
+        let origin = Vec3::new(x, y, 0.0) * self.aperture;
+        (origin, focus_point - origin)
     }
     // ANCHOR_END: thin_lens
 }
@@ -70,16 +70,14 @@ mod tests {
             aperture: 2.0,
             focus: 55.0,
         };
-        let eye = Vec3::new(0.0, 0.0, 55.0);
         let direction = Vec3::new(3.0, -2.0, -10.0);
-        let target = eye + direction * 5.5;
+        let target = direction * 5.5;
         let mut rng = pixel_rng(3, 4);
         for _ in 0..100 {
-            let ray = lens.ray(eye, direction, &mut rng);
-            assert!((ray.origin - eye).length() <= 2.0);
-            assert!((ray.origin.z - eye.z).abs() == 0.0);
-            let t = (target.z - ray.origin.z) / ray.direction.z;
-            assert!((ray.at(t) - target).length() < 1e-12);
+            let (origin, through) = lens.ray(direction, &mut rng);
+            assert!(origin.length() <= 2.0 && origin.z == 0.0);
+            let t = (target.z - origin.z) / through.z;
+            assert!((origin + t * through - target).length() < 1e-12);
         }
     }
 }

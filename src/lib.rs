@@ -26,6 +26,12 @@
 #[cfg(not(feature = "s1"))]
 compile_error!("raycourse needs at least the first session: enable feature s1 (or a later one)");
 
+#[cfg(feature = "s5")]
+mod aabb;
+#[cfg(feature = "s7")]
+mod aim;
+#[cfg(feature = "s6")]
+mod bvh;
 mod camera;
 mod error;
 mod features;
@@ -42,6 +48,10 @@ mod lens;
 mod light;
 mod material;
 mod math;
+#[cfg(feature = "s5")]
+mod mesh;
+#[cfg(feature = "s5")]
+mod mesh_file;
 #[cfg(feature = "s2")]
 mod optics;
 mod png;
@@ -53,13 +63,25 @@ mod rng;
 mod sampling;
 mod scene;
 mod scene_file;
+#[cfg(feature = "s6")]
+mod smooth;
 mod sphere;
 #[cfg(feature = "s4")]
 mod sphere_light;
 mod stages;
 mod termination;
+#[cfg(feature = "s7")]
+mod texture;
+#[cfg(feature = "s5")]
+mod triangle;
 mod values;
 
+#[cfg(feature = "s5")]
+pub use aabb::*;
+#[cfg(feature = "s7")]
+pub use aim::*;
+#[cfg(feature = "s6")]
+pub use bvh::*;
 pub use camera::*;
 pub use error::*;
 pub use features::*;
@@ -74,6 +96,10 @@ pub use lens::*;
 pub use light::*;
 pub use material::*;
 pub use math::*;
+#[cfg(feature = "s5")]
+pub use mesh::*;
+#[cfg(feature = "s5")]
+pub use mesh_file::*;
 #[cfg(feature = "s2")]
 pub use optics::*;
 pub use png::*;
@@ -90,4 +116,8 @@ pub use sphere::*;
 pub use sphere_light::*;
 pub use stages::*;
 pub use termination::*;
+#[cfg(feature = "s7")]
+pub use texture::*;
+#[cfg(feature = "s5")]
+pub use triangle::*;
 pub use values::*;

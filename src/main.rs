@@ -61,6 +61,33 @@ enum Command {
         #[command(flatten)]
         options: RenderArgs,
     },
+    /// Render a stage of session 5.
+    #[cfg(feature = "s5")]
+    S5 {
+        /// The stage.
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(5)))]
+        stage: String,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render a stage of session 6.
+    #[cfg(feature = "s6")]
+    S6 {
+        /// The stage.
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(6)))]
+        stage: String,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render a stage of session 7.
+    #[cfg(feature = "s7")]
+    S7 {
+        /// The stage.
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(7)))]
+        stage: String,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
     /// Render a scene file.
     Render {
         /// The scene file (TOML).
@@ -117,6 +144,7 @@ impl RenderArgs {
             samples: self.spp,
             bounces: self.bounces,
             seed: self.seed,
+            plunge: None,
         }
     }
 }
@@ -174,6 +202,12 @@ fn run(cli: Cli) -> Result<(), Failure> {
         Some(Command::S3 { stage, options }) => render_named(3, &stage, &options),
         #[cfg(feature = "s4")]
         Some(Command::S4 { stage, options }) => render_named(4, &stage, &options),
+        #[cfg(feature = "s5")]
+        Some(Command::S5 { stage, options }) => render_named(5, &stage, &options),
+        #[cfg(feature = "s6")]
+        Some(Command::S6 { stage, options }) => render_named(6, &stage, &options),
+        #[cfg(feature = "s7")]
+        Some(Command::S7 { stage, options }) => render_named(7, &stage, &options),
         Some(Command::Render { scene, options }) => {
             let loaded = raycourse::load_scene(&scene, &options.overrides())?;
             let name = scene

@@ -10,6 +10,9 @@ pub type Real = f64;
 /// A point or a direction in space (x right, y up, z towards the viewer).
 pub type Vec3 = glam::DVec3;
 
+/// A 3x3 matrix: the rotation that places a mesh.
+pub type Mat3 = glam::DMat3;
+
 /// Linear radiance in red, green and blue, on the course's scale (see [`crate::Film`]).
 pub type Colour = glam::DVec3;
 // ANCHOR_END: types

@@ -100,7 +100,7 @@ impl<'a> Tracer<'a> {
                         return Colour::ZERO;
                     }
                 }
-                light.lambert(hit.point, hit.normal, albedo)
+                light.lambert(hit.point, hit.shading_normal, albedo)
             }
             #[cfg(feature = "s4")]
             Some(Light::Sphere(light)) if self.scene.settings.light_sampling => {

@@ -36,8 +36,11 @@ pub struct Settings {
 pub struct Scene {
     /// The eye and the image size.
     pub camera: Camera,
-    /// The objects.
+    /// The spheres.
     pub spheres: Vec<Sphere>,
+    /// The triangle meshes; in hits they are numbered after the spheres.
+    #[cfg(feature = "s5")]
+    pub meshes: Vec<crate::mesh::Mesh>,
     /// The light source, if the scene has one.
     pub light: Option<Light>,
     /// Render settings.
@@ -85,6 +88,10 @@ impl Scene {
                 nearest = Some((t, i));
             }
         }
+        #[cfg(feature = "s5")]
+        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
+            return Some(hit);
+        }
         nearest.map(|(t, i)| self.spheres[i].hit_at(ray, t, i))
     }
     // ANCHOR_END: nearest
@@ -102,6 +109,14 @@ impl Scene {
 
     /// Whether any object lies on `ray` closer than `distance`: the shadow-ray test.
     pub fn occluded(&self, ray: &Ray, distance: Real) -> bool {
+        #[cfg(feature = "s5")]
+        if self
+            .meshes
+            .iter()
+            .any(|m| m.intersect(ray, distance).is_some())
+        {
+            return true;
+        }
         self.spheres
             .iter()
             .any(|s| s.intersect(ray).is_some_and(|t| t < distance))

@@ -7,16 +7,17 @@ use std::path::Path;
 use serde::Deserialize;
 
 use crate::camera::Camera;
-use crate::camera::{Lens, PixelFilter};
+use crate::camera::{Lens, Orientation, PixelFilter};
 use crate::error::SceneError;
 use crate::features::{SESSION, feature_name};
 use crate::light::{Light, PointLight};
 use crate::material::Material;
 use crate::math::Colour;
+use crate::math::Real;
 use crate::scene::{Scene, Settings};
 use crate::sphere::Sphere;
 use crate::termination::Termination;
-use crate::values::{Albedo, Degrees, NonNegative, Point, Positive, Probability, Rgb};
+use crate::values::{Albedo, Degrees, Finite, NonNegative, Point, Positive, Probability, Rgb};
 
 /// The largest image, in pixels, a scene may ask for (8192 x 8192): beyond it the
 /// film alone would take gigabytes.
@@ -35,6 +36,59 @@ pub struct SceneFile {
     /// The `[[spheres]]` array.
     #[serde(default)]
     pub spheres: Vec<SphereSpec>,
+    /// The `[[meshes]]` array (session 5).
+    #[serde(default)]
+    pub meshes: Vec<MeshSpec>,
+}
+
+/// One `[[meshes]]` entry: an OBJ file placed in the scene,
+/// `p' = rotation (scale p) + translation`.
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeshSpec {
+    /// The OBJ file, relative to the scene file.
+    pub obj: String,
+    /// Uniform scale (default 1).
+    pub scale: Option<Positive>,
+    /// Rotation in degrees about `x`, then `y`, then `z` (default none).
+    pub rotation: Option<Point>,
+    /// Translation (default none).
+    pub translation: Option<Point>,
+    /// Diffuse albedo where there is no texture (default white).
+    pub albedo: Option<Albedo>,
+    /// Shade with interpolated vertex normals (session 6; default false).
+    #[serde(default)]
+    pub smooth_normals: bool,
+    /// Colour from the OBJ material's `map_Kd` texture (session 7; default false).
+    #[serde(default)]
+    pub textured: bool,
+    /// A texture file replacing the material's, relative to the scene file (session 7).
+    pub texture: Option<String>,
+    /// How the texture is read (session 7; default nearest).
+    pub texture_filter: Option<FilterSpec>,
+}
+
+/// `texture_filter = "nearest"` or `"bilinear"`.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum FilterSpec {
+    /// The texel the point falls in.
+    Nearest,
+    /// The four nearest texels, blended.
+    Bilinear,
+}
+
+/// `acceleration = "none"`, `"bbox"` or `"bvh"`: how meshes are searched.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum AccelerationSpec {
+    /// Every triangle for every ray (session 5).
+    #[default]
+    None,
+    /// Test the mesh's bounding box first (session 5).
+    Bbox,
+    /// A bounding volume hierarchy (session 6).
+    Bvh,
 }
 
 /// `[render]`: image size and how the render is done.
@@ -68,6 +122,9 @@ pub struct RenderSpec {
     /// Survival probability of Russian roulette past the bounce limit (session 4;
     /// absent: paths stop at the limit).
     pub russian_roulette: Option<Probability>,
+    /// How meshes are searched for the nearest hit (session 5; default none).
+    #[serde(default)]
+    pub acceleration: AccelerationSpec,
 }
 
 fn one() -> NonZeroU32 {
@@ -91,6 +148,13 @@ pub struct CameraSpec {
     pub antialiasing: Option<Positive>,
     /// A thin lens (session 4; absent: a pinhole).
     pub lens: Option<LensSpec>,
+    /// The point the camera looks at (session 7; absent: down `-z`).
+    pub look_at: Option<Point>,
+    /// Which way is up when aiming (session 7; default `[0, 1, 0]`).
+    pub up: Option<Point>,
+    /// Angle in degrees by which the eye is raised around `look_at`, keeping its
+    /// distance, to look down on the scene (session 7; default 0).
+    pub plunge: Option<Finite>,
 }
 
 /// `lens = { aperture = ..., focus = ... }`: a thin lens.
@@ -173,7 +237,7 @@ impl MaterialSpec {
 
 /// Render settings given on the command line, replacing those of the scene file
 /// before it is checked.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Overrides {
     /// Image width in pixels.
     pub width: Option<NonZeroU32>,
@@ -185,15 +249,22 @@ pub struct Overrides {
     pub bounces: Option<u32>,
     /// Random seed.
     pub seed: Option<u64>,
+    /// The camera's plunge angle in degrees (the animation's variable).
+    pub plunge: Option<Real>,
 }
 
 impl Overrides {
-    fn apply(&self, r: &mut RenderSpec) {
+    fn apply(&self, file: &mut SceneFile) -> Result<(), String> {
+        if let Some(p) = self.plunge {
+            file.camera.plunge = Some(Finite::try_from(p)?);
+        }
+        let r = &mut file.render;
         r.width = self.width.unwrap_or(r.width);
         r.height = self.height.unwrap_or(r.height);
         r.samples = self.samples.unwrap_or(r.samples);
         r.bounces = self.bounces.unwrap_or(r.bounces);
         r.seed = self.seed.unwrap_or(r.seed);
+        Ok(())
     }
 }
 
@@ -226,8 +297,33 @@ pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<S
         let inner = e.into_inner();
         invalid(inner.span(), key, inner.message())
     })?;
-    overrides.apply(&mut file.render);
+    overrides
+        .apply(&mut file)
+        .map_err(|message| SceneError::Inconsistent {
+            path: path.to_owned(),
+            key: "camera.plunge".into(),
+            message,
+        })?;
     file.into_scene(path)
+}
+
+/// The error for a scene key that needs a later session's feature.
+pub fn missing_feature(path: &Path, key: &str, session: u32, what: &str) -> SceneError {
+    SceneError::NeedsFeature {
+        path: path.to_owned(),
+        key: key.to_owned(),
+        what: what.to_owned(),
+        feature: feature_name(session),
+    }
+}
+
+/// `Ok` if this build has `session`, else the error naming its feature.
+pub fn require(path: &Path, key: &str, session: u32, what: &str) -> Result<(), SceneError> {
+    if session <= SESSION {
+        Ok(())
+    } else {
+        Err(missing_feature(path, key, session, what))
+    }
 }
 
 /// 1-based line and column of byte `offset` in `source`.
@@ -242,19 +338,29 @@ impl SceneFile {
     /// The scene this file describes, once every value is known to be usable in this
     /// build.
     pub fn into_scene(self, path: &Path) -> Result<Scene, SceneError> {
-        let missing = |key: &str, session: u32, what: &str| SceneError::NeedsFeature {
-            path: path.to_owned(),
-            key: key.to_owned(),
-            what: what.to_owned(),
-            feature: feature_name(session),
-        };
-        let needs = |key: &str, session: u32, what: &str| {
-            if session <= SESSION {
-                Ok(())
-            } else {
-                Err(missing(key, session, what))
-            }
-        };
+        let missing =
+            |key: &str, session: u32, what: &str| missing_feature(path, key, session, what);
+        let needs = |key: &str, session: u32, what: &str| require(path, key, session, what);
+        if !self.meshes.is_empty() {
+            needs("meshes", 5, "triangle meshes")?;
+        }
+        if self.render.acceleration != AccelerationSpec::None {
+            needs("render.acceleration", 5, "an acceleration structure")?;
+        }
+        if self.render.acceleration == AccelerationSpec::Bvh {
+            needs("render.acceleration", 6, "a bounding volume hierarchy")?;
+        }
+        let camera = &self.camera;
+        if camera.look_at.is_some() || camera.up.is_some() || camera.plunge.is_some() {
+            needs("camera.look_at", 7, "an aimed camera")?;
+        }
+        if camera.look_at.is_none() && (camera.up.is_some() || camera.plunge.is_some()) {
+            return Err(SceneError::Inconsistent {
+                path: path.to_owned(),
+                key: "camera.look_at".into(),
+                message: "`up` and `plunge` aim the camera: give it a `look_at` point".into(),
+            });
+        }
         let r = &self.render;
         let pixels = u64::from(r.width.get()) * u64::from(r.height.get());
         if pixels > MAX_PIXELS {
@@ -361,14 +467,34 @@ impl SceneFile {
             Some(Probability(survival)) => Termination::RussianRoulette { survival },
             Some(_) => return Err(missing("render.russian_roulette", 4, "Russian roulette")),
         };
+        #[allow(unreachable_patterns, reason = "every arm exists from session 7 on")]
+        let (position, orientation) = match self.camera.look_at {
+            None => (self.camera.position.0, Orientation::Fixed),
+            #[cfg(feature = "s7")]
+            Some(target) => crate::aim::aim(
+                self.camera.position.0,
+                target.0,
+                self.camera.up.map_or(crate::math::Vec3::Y, |u| u.0),
+                self.camera.plunge.map_or(0.0, |p| p.0),
+            )
+            .ok_or_else(|| SceneError::Inconsistent {
+                path: path.to_owned(),
+                key: "camera.up".into(),
+                message: "the camera must not look along `up` or at its own position".into(),
+            })?,
+            Some(_) => return Err(missing("camera.look_at", 7, "an aimed camera")),
+        };
         Ok(Scene {
+            #[cfg(feature = "s5")]
+            meshes: crate::mesh_file::build_meshes(&self.meshes, r.acceleration, path)?,
             camera: Camera {
-                position: self.camera.position.0,
+                position,
                 fov: self.camera.fov.0.to_radians(),
                 width: r.width.get(),
                 height: r.height.get(),
                 filter,
                 lens,
+                orientation,
             },
             spheres,
             light,

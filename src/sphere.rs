@@ -72,6 +72,7 @@ impl Sphere {
             t,
             point,
             normal,
+            shading_normal: normal,
             error: error_bound(7) * (self.centre.abs() + (self.radius * normal).abs()),
             material: self.material,
             emission: self.emission,

@@ -98,7 +98,7 @@ impl Tracer<'_> {
         let Some((direction, pdf)) = light.sample(hit.point, u1, u2) else {
             return Colour::ZERO;
         };
-        let cos = direction.dot(hit.normal);
+        let cos = direction.dot(hit.shading_normal);
         if cos <= 0.0 {
             return Colour::ZERO;
         }

@@ -101,6 +101,32 @@ const ALL: &[Stage] = &[
         "russian-roulette",
         "extra: Russian roulette past the bounce limit"
     ),
+    stage!(
+        5,
+        Some(13),
+        "mesh",
+        "a triangle mesh from an OBJ file, brute force"
+    ),
+    stage!(
+        5,
+        Some(14),
+        "mesh-bbox",
+        "the mesh's bounding box tested first"
+    ),
+    stage!(6, Some(15), "bvh", "a bounding volume hierarchy"),
+    stage!(6, Some(16), "smooth-normals", "interpolated vertex normals"),
+    stage!(
+        7,
+        Some(17),
+        "textures",
+        "texture coordinates and texture lookup"
+    ),
+    stage!(
+        7,
+        Some(18),
+        "camera",
+        "a camera placed and aimed: the plunging view"
+    ),
 ];
 
 /// The stages of this build: those of the sessions its features enable.
@@ -122,8 +148,10 @@ pub fn find_stage(session: u32, name: &str) -> Option<&'static Stage> {
 }
 
 impl Stage {
-    /// The stage's scene, at the course's settings but for `overrides`.
+    /// The stage's scene, at the course's settings but for `overrides`. Files the
+    /// scene refers to (meshes, textures) are found in this crate's folder.
     pub fn scene(&self, overrides: &Overrides) -> Result<Scene, SceneError> {
-        parse_scene(self.source, Path::new(self.path), overrides)
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(self.path);
+        parse_scene(self.source, &path, overrides)
     }
 }

@@ -14,6 +14,18 @@ fn finite(v: Real) -> Result<Real, String> {
     }
 }
 
+/// Any finite number (an angle that may be negative).
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
+#[serde(try_from = "Real")]
+pub struct Finite(pub Real);
+
+impl TryFrom<Real> for Finite {
+    type Error = String;
+    fn try_from(v: Real) -> Result<Self, String> {
+        finite(v).map(Self)
+    }
+}
+
 /// A number greater than zero (a radius, a refractive index, a gamma).
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq)]
 #[serde(try_from = "Real")]

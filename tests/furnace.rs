@@ -5,8 +5,8 @@
 #![cfg(feature = "s2")]
 
 use raycourse::{
-    Camera, Colour, Lens, Material, PixelFilter, Real, Scene, Settings, Sphere, Termination,
-    Tracer, Vec3, pixel_rng,
+    Camera, Colour, Lens, Material, Orientation, PixelFilter, Real, Scene, Settings, Sphere,
+    Termination, Tracer, Vec3, pixel_rng,
 };
 
 const SIZE: u32 = 24;
@@ -38,8 +38,11 @@ fn furnace(rho: Real, le: Real, object: Option<Material>, settings: Settings) ->
             height: SIZE,
             filter: PixelFilter::Centre,
             lens: Lens::Pinhole,
+            orientation: Orientation::Fixed,
         },
         spheres,
+        #[cfg(feature = "s5")]
+        meshes: vec![],
         light: None,
         settings,
     }

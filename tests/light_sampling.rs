@@ -24,6 +24,7 @@ fn scene(name: &str, bounces: u32, samples: u32) -> Scene {
             samples: NonZeroU32::new(samples),
             bounces: Some(bounces),
             seed: Some(5),
+            ..Overrides::default()
         })
         .unwrap()
 }
