@@ -63,6 +63,7 @@ impl Aabb {
     /// `0 * inf` when the origin lies on a slab plane. The exit distance is widened
     /// by `1 + 2 gamma(3)` (pbrt-v4) so that rounding never misses a box that a
     /// triangle hit inside it proves the ray reaches.
+    #[inline]
     pub fn entry(&self, ray: &Ray, inv_direction: Vec3, t_max: Real) -> Option<Real> {
         let t1 = (self.min - ray.origin) * inv_direction;
         let t2 = (self.max - ray.origin) * inv_direction;

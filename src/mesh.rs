@@ -183,6 +183,7 @@ impl Mesh {
     }
 
     /// The corners of triangle `index`.
+    #[inline]
     pub fn corners(&self, index: u32) -> [Vec3; 3] {
         self.triangles[index as usize].map(|i| self.positions[i as usize])
     }

@@ -25,6 +25,7 @@ pub struct TriangleHit {
 /// `gamma = d . q / det`, `t = e2 . q / det`. The point is inside when
 /// `beta >= 0`, `gamma >= 0` and `beta + gamma <= 1`. A ray parallel to the plane
 /// has `det = 0` and misses.
+#[inline]
 pub fn intersect_triangle(
     ray: &Ray,
     a: Vec3,

@@ -31,7 +31,12 @@ fn list_shows_exactly_the_stages_of_this_build() {
         .collect();
     let expected: Vec<&str> = stages().map(|s| s.name).collect();
     assert_eq!(listed, expected);
-    assert!(stdout.lines().skip(1).all(|l| l.contains("512x512")));
+    assert!(
+        stdout
+            .lines()
+            .skip(1)
+            .all(|l| l.contains("512x512") || l.contains("128x128"))
+    );
 }
 
 #[test]

@@ -1,0 +1,213 @@
+//! Meshes: what the loader reads from the two assets, that the bounding box and the
+//! BVH find exactly the hit that brute force finds, and clear errors for bad files.
+#![cfg(feature = "s5")]
+
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+use raycourse::{
+    Mat3, Mesh, MeshHit, ObjData, Overrides, Placement, Ray, Real, Search, Vec3, parse_scene,
+    pixel_rng, read_obj, uniform,
+};
+use rayon::prelude::*;
+
+fn asset(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("assets").join(path)
+}
+
+fn distinct_positions(data: &ObjData) -> usize {
+    let keys: HashSet<[u64; 3]> = data
+        .positions
+        .iter()
+        .map(|p| p.to_array().map(Real::to_bits))
+        .collect();
+    keys.len()
+}
+
+#[test]
+fn spot_loads_with_normals_uvs_and_its_texture() {
+    let data = read_obj(&asset("spot/spot.obj")).unwrap();
+    assert_eq!(data.triangles.len(), 5856);
+    assert_eq!(distinct_positions(&data), 2930, "the file's `v` lines");
+    // One index per corner: a position is repeated for each distinct (v, vt, vn).
+    assert_eq!(data.positions.len(), 3225);
+    assert_eq!(data.normals.len(), data.positions.len());
+    assert_eq!(data.uvs.len(), data.positions.len());
+    assert_eq!(data.diffuse_texture, Some(asset("spot/spot_texture.png")));
+}
+
+#[test]
+fn ogre_loads_with_normals_and_uvs_but_no_material() {
+    let data = read_obj(&asset("ogre/ogre.obj")).unwrap();
+    assert_eq!(data.triangles.len(), 39856);
+    assert_eq!(distinct_positions(&data), 19985);
+    assert_eq!(data.positions.len(), 19985);
+    assert_eq!(data.normals.len(), 19985);
+    assert_eq!(data.uvs.len(), 19985);
+    assert_eq!(data.diffuse_texture, None, "ogre.obj has no mtllib");
+}
+
+/// `count` seeded rays from a sphere around the mesh towards random points of its box.
+fn rays_at(mesh: &Mesh, count: u64) -> Vec<Ray> {
+    let centre = mesh.bounds.centre();
+    let radius = (mesh.bounds.max - mesh.bounds.min).length();
+    (0..count)
+        .map(|i| {
+            let mut rng = pixel_rng(99, i);
+            let mut u = || uniform(&mut rng);
+            let z: Real = 2.0 * u() - 1.0;
+            let phi = 2.0 * raycourse::PI * u();
+            let r = (1.0 - z * z).sqrt();
+            let origin = centre + radius * Vec3::new(r * phi.cos(), r * phi.sin(), z);
+            let size = mesh.bounds.max - mesh.bounds.min;
+            let target = mesh.bounds.min + size * Vec3::new(u(), u(), u());
+            Ray::new(origin, target - origin)
+        })
+        .collect()
+}
+
+fn hits(mesh: &Mesh, rays: &[Ray]) -> Vec<Option<MeshHit>> {
+    rays.par_iter()
+        .map(|ray| mesh.intersect(ray, Real::INFINITY))
+        .collect()
+}
+
+/// Brute force, bounding box and (from session 6) BVH find the same triangle at the
+/// same distance for every ray.
+fn searches_agree(obj: &str, count: u64) {
+    let data = read_obj(&asset(obj)).unwrap();
+    let placement = Placement {
+        scale: 1.0,
+        rotation: Mat3::IDENTITY,
+        translation: Vec3::ZERO,
+    };
+    let mut mesh = Mesh::new(&data, &placement);
+    let rays = rays_at(&mesh, count);
+    let brute = hits(&mesh, &rays);
+    let hit_count = brute.iter().flatten().count();
+    assert!(hit_count as u64 > count / 4, "{hit_count} rays hit: the test is not vacuous");
+    mesh.search = Search::BoundingBox;
+    assert!(hits(&mesh, &rays) == brute, "bounding box differs from brute force");
+    #[cfg(feature = "s6")]
+    {
+        mesh.search = Search::Bvh(raycourse::Bvh::build(&mesh));
+        let bvh = hits(&mesh, &rays);
+        let differing = bvh.iter().zip(&brute).filter(|(a, b)| a != b).count();
+        assert_eq!(differing, 0, "BVH differs from brute force");
+    }
+}
+
+#[test]
+fn searches_agree_on_spot() {
+    searches_agree("spot/spot.obj", 100_000);
+}
+
+#[test]
+fn searches_agree_on_the_ogre() {
+    searches_agree("ogre/ogre.obj", 100_000);
+}
+
+/// A scene in a temporary folder with one mesh entry and the given files.
+fn scene_error(mesh_keys: &str, files: &[(&str, &[u8])]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, bytes) in files {
+        std::fs::write(dir.path().join(name), bytes).unwrap();
+    }
+    let text = format!(
+        "[render]\nwidth = 8\nheight = 8\n[camera]\nposition = [0, 0, 5]\nfov = 60\n\
+         [[meshes]]\n{mesh_keys}\n"
+    );
+    let path = dir.path().join("scene.toml");
+    let err = parse_scene(&text, &path, &Overrides::default()).unwrap_err();
+    err.to_string()
+        .replace(&dir.path().display().to_string(), "DIR")
+}
+
+const TRIANGLE: &[u8] = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+
+#[test]
+fn a_missing_obj_file_is_named() {
+    assert_eq!(
+        scene_error("obj = \"nowhere.obj\"", &[]),
+        "DIR/nowhere.obj: cannot load the mesh: open file failed (referred to by \
+         DIR/scene.toml)"
+    );
+}
+
+#[test]
+fn an_out_of_range_index_is_refused() {
+    assert_eq!(
+        scene_error(
+            "obj = \"bad.obj\"",
+            &[("bad.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n")]
+        ),
+        "DIR/bad.obj: cannot load the mesh: face vertex index out of bounds (referred to by \
+         DIR/scene.toml)"
+    );
+}
+
+#[test]
+fn a_file_without_triangles_is_refused() {
+    assert_eq!(
+        scene_error("obj = \"empty.obj\"", &[("empty.obj", b"v 0 0 0\n")]),
+        "DIR/empty.obj: cannot load the mesh: no triangles (referred to by DIR/scene.toml)"
+    );
+}
+
+#[cfg(feature = "s7")]
+#[test]
+fn a_missing_or_broken_texture_is_named() {
+    assert_eq!(
+        scene_error(
+            "obj = \"t.obj\"\ntexture = \"missing.png\"",
+            &[("t.obj", TRIANGLE)]
+        ),
+        "DIR/missing.png: cannot read the texture: No such file or directory (os error 2) \
+         (referred to by DIR/scene.toml)"
+    );
+    let err = scene_error(
+        "obj = \"t.obj\"\ntexture = \"fake.png\"",
+        &[("t.obj", TRIANGLE), ("fake.png", b"not a picture")],
+    );
+    assert!(
+        err.starts_with("DIR/fake.png: cannot read the texture: "),
+        "{err}"
+    );
+}
+
+#[cfg(not(feature = "s7"))]
+#[test]
+fn textures_need_session_seven() {
+    assert_eq!(
+        scene_error("obj = \"t.obj\"\ntextured = true", &[("t.obj", TRIANGLE)]),
+        "DIR/scene.toml: key `meshes[0].textured`: textures needs feature s7: cargo run \
+         --features s7 -- ..."
+    );
+}
+
+#[cfg(feature = "s6")]
+#[test]
+fn missing_normals_fall_back_to_the_geometric_normal() {
+    let data = read_obj_text(TRIANGLE);
+    assert!(data.normals.is_empty());
+    let placement = Placement {
+        scale: 1.0,
+        rotation: Mat3::IDENTITY,
+        translation: Vec3::ZERO,
+    };
+    let mut mesh = Mesh::new(&data, &placement);
+    mesh.shading = raycourse::Shading::Smooth;
+    let ray = Ray::new(Vec3::new(0.2, 0.2, 1.0), -Vec3::Z);
+    let hit = mesh.intersect(&ray, Real::INFINITY).unwrap();
+    let record = mesh.hit_record(&ray, hit, 0);
+    assert_eq!(record.shading_normal, record.normal);
+    assert_eq!(record.normal, Vec3::Z);
+}
+
+#[cfg(feature = "s6")]
+fn read_obj_text(text: &[u8]) -> ObjData {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("m.obj");
+    std::fs::write(&path, text).unwrap();
+    read_obj(&path).unwrap()
+}
