@@ -9,7 +9,7 @@ use std::time::Instant;
 use clap::builder::PossibleValuesParser;
 use clap::{Args, Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
-use raycourse::{Overrides, Scene, SceneError, Stage, encode_png, render, stages};
+use raycourse::{Overrides, Render, Scene, SceneError, Stage, encode_png, render, stages};
 
 /// Ray tracing, one course session at a time. With no command, renders the last
 /// stage of this build into `out/` (the render options apply to it).
@@ -95,6 +95,33 @@ enum Command {
         #[command(flatten)]
         options: RenderArgs,
     },
+    /// Render a stage's camera move, the eye rising around the point it looks at,
+    /// into an animated GIF (or numbered PNG frames if `--out` ends in `.png`).
+    #[cfg(feature = "s7")]
+    Animate {
+        /// The stage (its camera must have a `look_at` point).
+        #[arg(value_parser = PossibleValuesParser::new(raycourse::stage_names(7)))]
+        stage: String,
+        /// Number of frames.
+        #[arg(long, default_value = "24")]
+        frames: NonZeroU32,
+        /// Plunge angle of the first frame, degrees.
+        #[arg(long, default_value_t = 0.0)]
+        from: f64,
+        /// Plunge angle of the last frame, degrees.
+        #[arg(long, default_value_t = 30.0)]
+        to: f64,
+        #[command(flatten)]
+        options: RenderArgs,
+    },
+    /// Render the mesh stages (figures 13 to 18) at the course's settings and print
+    /// a table of their times beside the course's own.
+    #[cfg(feature = "s5")]
+    Bench {
+        /// Worker threads (default: one per core).
+        #[arg(long)]
+        threads: Option<NonZeroUsize>,
+    },
     /// Render every stage of this build at the course's settings into a folder, as
     /// `<stage>.png`: the book's figures.
     Figures {
@@ -158,6 +185,12 @@ enum Failure {
         threads: usize,
         source: rayon::ThreadPoolBuildError,
     },
+    #[cfg(feature = "s7")]
+    #[error("stage {0} has no aimed camera (`look_at`) to move")]
+    NotAimed(String),
+    #[cfg(feature = "s7")]
+    #[error("cannot encode the animation: {0}")]
+    Gif(image::ImageError),
     #[error("{}: cannot write the image: {source}", path.display())]
     Write {
         path: PathBuf,
@@ -170,7 +203,9 @@ impl Failure {
     fn exit_code(&self) -> ExitCode {
         match self {
             Self::Scene(_) => ExitCode::from(2),
-            Self::Threads { .. } | Self::Write { .. } => ExitCode::FAILURE,
+            #[cfg(feature = "s7")]
+            Self::NotAimed(_) => ExitCode::from(2),
+            _ => ExitCode::FAILURE,
         }
     }
 }
@@ -216,6 +251,16 @@ fn run(cli: Cli) -> Result<(), Failure> {
             let out = Path::new("out").join(format!("{name}.png"));
             render_to_file(&name, &loaded, &options, out)
         }
+        #[cfg(feature = "s7")]
+        Some(Command::Animate {
+            stage,
+            frames,
+            from,
+            to,
+            options,
+        }) => animate(&stage, frames.get(), (from, to), &options),
+        #[cfg(feature = "s5")]
+        Some(Command::Bench { threads }) => bench(threads),
         Some(Command::Figures { dir, quiet }) => stages().try_for_each(|stage| {
             let options = RenderArgs {
                 out: Some(dir.join(format!("{}.png", stage.name))),
@@ -258,13 +303,15 @@ fn render_stage(stage: &Stage, options: &RenderArgs) -> Result<(), Failure> {
     render_to_file(stage.name, &scene, options, out)
 }
 
-fn render_to_file(
-    label: &str,
-    scene: &Scene,
-    options: &RenderArgs,
-    default_out: PathBuf,
-) -> Result<(), Failure> {
-    let out = options.out.clone().unwrap_or(default_out);
+/// A render and how it went.
+struct Timed {
+    result: Render,
+    seconds: f64,
+    threads: usize,
+}
+
+/// Renders `scene` on `options.threads` threads with a progress bar (unless quiet).
+fn timed_render(label: &str, scene: &Scene, options: &RenderArgs) -> Result<Timed, Failure> {
     let threads = options.threads.map_or(0, NonZeroUsize::get);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -284,23 +331,148 @@ fn render_to_file(
     let result = pool.install(|| render(scene, &progress));
     let seconds = start.elapsed().as_secs_f64();
     progress.finish_and_clear();
-    let png = encode_png(&result.film, scene.settings.gamma);
-    raycourse::write_atomically(&out, &png).map_err(|source| Failure::Write {
-        path: out.clone(),
+    Ok(Timed {
+        result,
+        seconds,
+        threads: pool.current_num_threads(),
+    })
+}
+
+/// Writes `bytes` to `path` without leaving half a file.
+fn write(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
+    raycourse::write_atomically(path, bytes).map_err(|source| Failure::Write {
+        path: path.to_owned(),
         source,
-    })?;
-    let dropped = match result.dropped {
+    })
+}
+
+fn render_to_file(
+    label: &str,
+    scene: &Scene,
+    options: &RenderArgs,
+    default_out: PathBuf,
+) -> Result<(), Failure> {
+    let out = options.out.clone().unwrap_or(default_out);
+    let timed = timed_render(label, scene, options)?;
+    write(&out, &encode_png(&timed.result.film, scene.settings.gamma))?;
+    let dropped = match timed.result.dropped {
         0 => String::new(),
         n => format!(", {n} non-finite samples dropped"),
     };
     println!(
         "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{dropped} -> {}",
         scene.summary(),
-        seconds,
-        result.rays,
-        result.rays as f64 / seconds / 1e6,
-        pool.current_num_threads(),
+        timed.seconds,
+        timed.result.rays,
+        timed.result.rays as f64 / timed.seconds / 1e6,
+        timed.threads,
         out.display()
     );
+    Ok(())
+}
+
+/// Renders `frames` frames of stage `name` with the plunge angle going from
+/// `angles.0` to `angles.1`, into a looping GIF or numbered PNG files.
+#[cfg(feature = "s7")]
+fn animate(
+    name: &str,
+    frames: u32,
+    angles: (f64, f64),
+    options: &RenderArgs,
+) -> Result<(), Failure> {
+    use image::codecs::gif::{GifEncoder, Repeat};
+    use image::{Delay, Frame, RgbaImage};
+
+    let stage = raycourse::find_stage(7, name).expect("clap only accepts stages of session 7");
+    let out = options
+        .out
+        .clone()
+        .unwrap_or_else(|| Path::new("out").join(format!("{name}.gif")));
+    let as_png = out.extension().is_some_and(|e| e == "png");
+    let mut gif = Vec::new();
+    let mut encoder = (!as_png).then(|| GifEncoder::new_with_speed(&mut gif, 10));
+    if let Some(encoder) = encoder.as_mut() {
+        encoder.set_repeat(Repeat::Infinite).map_err(Failure::Gif)?;
+    }
+    let start = Instant::now();
+    for k in 0..frames {
+        let step = if frames > 1 {
+            f64::from(k) / f64::from(frames - 1)
+        } else {
+            0.0
+        };
+        let overrides = Overrides {
+            plunge: Some(angles.0 + (angles.1 - angles.0) * step),
+            ..options.overrides()
+        };
+        let scene = stage.scene(&overrides)?;
+        if scene.camera.orientation == raycourse::Orientation::Fixed {
+            return Err(Failure::NotAimed(name.to_owned()));
+        }
+        let label = format!("{name} frame {}/{frames}", k + 1);
+        let timed = timed_render(&label, &scene, options)?;
+        let png = encode_png(&timed.result.film, scene.settings.gamma);
+        if let Some(encoder) = encoder.as_mut() {
+            let rgb = image::load_from_memory(&png).expect("the PNG was just encoded");
+            let delay = Delay::from_numer_denom_ms(100, 1);
+            let frame = Frame::from_parts(RgbaImage::from(rgb.to_rgba8()), 0, 0, delay);
+            encoder.encode_frame(frame).map_err(Failure::Gif)?;
+        } else {
+            let stem = out.file_stem().unwrap_or_default().to_string_lossy();
+            write(&out.with_file_name(format!("{stem}-{k:03}.png")), &png)?;
+        }
+        if !options.quiet {
+            eprintln!("{label}: {:.2} s", timed.seconds);
+        }
+    }
+    let animated = encoder.is_some();
+    drop(encoder);
+    if animated {
+        write(&out, &gif)?;
+    }
+    println!(
+        "{name}: {frames} frames, plunge {} to {} degrees, {:.1} s -> {}",
+        angles.0,
+        angles.1,
+        start.elapsed().as_secs_f64(),
+        out.display()
+    );
+    Ok(())
+}
+
+/// The course's reported time for a mesh stage, where it gave one.
+#[cfg(feature = "s5")]
+fn course_time(stage: &str) -> &'static str {
+    match stage {
+        "mesh" => "35 s",
+        "mesh-bbox" => "15 s",
+        _ => "about 60 s",
+    }
+}
+
+/// Renders figures 13 to 18 at the course's settings and prints the timing table.
+#[cfg(feature = "s5")]
+fn bench(threads: Option<NonZeroUsize>) -> Result<(), Failure> {
+    let options = RenderArgs {
+        threads,
+        quiet: true,
+        ..RenderArgs::default()
+    };
+    println!("| stage | settings | triangles | time | Mrays/s | course |");
+    println!("|---|---|---|---|---|---|");
+    for stage in stages().filter(|s| s.session >= 5) {
+        let scene = stage.scene(&Overrides::default())?;
+        let triangles: usize = scene.meshes.iter().map(|m| m.triangles.len()).sum();
+        let timed = timed_render(stage.name, &scene, &options)?;
+        println!(
+            "| `{}` ({}) | {} | {triangles} | {:.2} s | {:.2} | {} |",
+            stage.name,
+            stage.figure.map_or("-".into(), |f| f.to_string()),
+            scene.summary(),
+            timed.seconds,
+            timed.result.rays as f64 / timed.seconds / 1e6,
+            course_time(stage.name)
+        );
+    }
     Ok(())
 }

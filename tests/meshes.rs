@@ -12,7 +12,9 @@ use raycourse::{
 use rayon::prelude::*;
 
 fn asset(path: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("assets").join(path)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("assets")
+        .join(path)
 }
 
 fn distinct_positions(data: &ObjData) -> usize {
@@ -85,9 +87,15 @@ fn searches_agree(obj: &str, count: u64) {
     let rays = rays_at(&mesh, count);
     let brute = hits(&mesh, &rays);
     let hit_count = brute.iter().flatten().count();
-    assert!(hit_count as u64 > count / 4, "{hit_count} rays hit: the test is not vacuous");
+    assert!(
+        hit_count as u64 > count / 4,
+        "{hit_count} rays hit: the test is not vacuous"
+    );
     mesh.search = Search::BoundingBox;
-    assert!(hits(&mesh, &rays) == brute, "bounding box differs from brute force");
+    assert!(
+        hits(&mesh, &rays) == brute,
+        "bounding box differs from brute force"
+    );
     #[cfg(feature = "s6")]
     {
         mesh.search = Search::Bvh(raycourse::Bvh::build(&mesh));
