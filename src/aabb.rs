@@ -59,17 +59,30 @@ impl Aabb {
     /// spends `t` in `[(min.x - o.x) / d.x, (max.x - o.x) / d.x]` (swapped if `d.x < 0`);
     /// it is inside the box where the three intervals overlap. `inv_direction`
     /// holds `1 / d` per axis, computed once per ray. A zero component gives
-    /// infinite bounds of the right signs, and `min`/`max` ignore the NaN of
-    /// `0 * inf` when the origin lies on a slab plane. The exit distance is widened
-    /// by `1 + 2 gamma(3)` (pbrt-v4) so that rounding never misses a box that a
-    /// triangle hit inside it proves the ray reaches.
+    /// infinite bounds of the right signs; when the origin also lies on that slab's
+    /// plane, `0 * inf` is NaN, and the comparisons below, false for NaN, leave the
+    /// interval unconstrained on that axis, as they should. The exit distance is
+    /// widened by `1 + 2 gamma(3)` (pbrt-v4) so that rounding never misses a box
+    /// that a triangle hit inside it proves the ray reaches.
     #[inline]
     pub fn entry(&self, ray: &Ray, inv_direction: Vec3, t_max: Real) -> Option<Real> {
-        let t1 = (self.min - ray.origin) * inv_direction;
-        let t2 = (self.max - ray.origin) * inv_direction;
-        let near = t1.min(t2).max_element().max(0.0);
-        let far = t1.max(t2).min_element() * (1.0 + 2.0 * error_bound(3));
-        (near <= far && near <= t_max).then_some(near)
+        let (mut near, mut far) = (0.0, t_max);
+        for axis in 0..3 {
+            let t1 = (self.min[axis] - ray.origin[axis]) * inv_direction[axis];
+            let t2 = (self.max[axis] - ray.origin[axis]) * inv_direction[axis];
+            let (t1, t2) = if t1 > t2 { (t2, t1) } else { (t1, t2) };
+            let t2 = t2 * (1.0 + 2.0 * error_bound(3));
+            if t1 > near {
+                near = t1;
+            }
+            if t2 < far {
+                far = t2;
+            }
+            if near > far {
+                return None;
+            }
+        }
+        Some(near)
     }
     // ANCHOR_END: slab
 }

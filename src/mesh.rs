@@ -99,6 +99,7 @@ pub struct ObjData {
     pub diffuse_texture: Option<std::path::PathBuf>,
 }
 
+// ANCHOR: obj_read
 /// Reads the OBJ file at `path` with tobj: polygons are split into triangles and
 /// every corner gets one index for position, normal and texture coordinates. The
 /// models of the file are merged; normals or texture coordinates are kept only if
@@ -157,6 +158,7 @@ pub fn read_obj(path: &Path) -> Result<ObjData, String> {
     }
     Ok(data)
 }
+// ANCHOR_END: obj_read
 
 impl Mesh {
     /// The mesh of `data` placed by `placement`, searched brute force, flat-shaded

@@ -154,7 +154,11 @@ mod tests {
         assert_eq!(t.colour([1.25, 0.75]), Colour::ZERO, "u past 1 wraps");
         assert_eq!(t.colour([-0.25, 0.75]), Colour::X, "negative u wraps");
         assert_eq!(t.colour([0.25, -0.25]), Colour::ZERO, "negative v wraps");
-        assert_eq!(t.colour([7.75, -2.25]), Colour::Z, "far outside");
+        assert_eq!(
+            t.colour([7.75, -2.25]),
+            Colour::X,
+            "far outside: (0.75, 0.75)"
+        );
         assert_eq!(t.colour([1e300, -1e300]), t.colour([1e300, -1e300]));
         assert!(t.colour([Real::NAN, 0.5]).is_finite());
     }

@@ -219,3 +219,33 @@ fn read_obj_text(text: &[u8]) -> ObjData {
     std::fs::write(&path, text).unwrap();
     read_obj(&path).unwrap()
 }
+
+/// The `mesh` stage (and, from session 6, the `bvh` stage) rendered at the same
+/// small settings: the searches differ only in time, so the bytes are equal.
+#[test]
+fn mesh_stages_render_the_same_bytes_whatever_the_search() {
+    use indicatif::ProgressBar;
+    use raycourse::{encode_png, find_stage, render};
+    use std::num::NonZeroU32;
+
+    let overrides = Overrides {
+        width: NonZeroU32::new(40),
+        height: NonZeroU32::new(40),
+        samples: NonZeroU32::new(1),
+        ..Overrides::default()
+    };
+    let png = |session: u32, name: &str| {
+        let scene = find_stage(session, name)
+            .unwrap()
+            .scene(&overrides)
+            .unwrap();
+        encode_png(
+            &render(&scene, &ProgressBar::hidden()).film,
+            scene.settings.gamma,
+        )
+    };
+    let brute = png(5, "mesh");
+    assert_eq!(png(5, "mesh-bbox"), brute, "bounding box");
+    #[cfg(feature = "s6")]
+    assert_eq!(png(6, "bvh"), brute, "BVH");
+}
