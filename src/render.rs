@@ -53,17 +53,27 @@ impl SampleMean {
 }
 
 // ANCHOR: pixel
-/// The samples of pixel (`row`, `column`), averaged. The pixel's random generator is
-/// seeded from the scene's seed and the pixel's index alone.
-pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> SampleMean {
+/// The radiance of each of the scene's samples of pixel (`row`, `column`), in order.
+/// The pixel's random generator is seeded from the scene's seed and the pixel's
+/// index alone.
+pub fn pixel_samples<'t, 's>(
+    tracer: &'t mut Tracer<'s>,
+    row: u32,
+    column: u32,
+) -> impl Iterator<Item = Colour> + use<'t, 's> {
     let scene = tracer.scene;
     let index = u64::from(row) * u64::from(scene.camera.width) + u64::from(column);
     tracer.rng = pixel_rng(scene.settings.seed, index);
-    let mut mean = SampleMean::default();
-    for _ in 0..scene.settings.samples {
+    (0..scene.settings.samples).map(move |_| {
         let ray = scene.camera.ray(row, column, &mut tracer.rng);
-        mean.add(tracer.radiance(&ray, scene.settings.bounces));
-    }
+        tracer.radiance(&ray, scene.settings.bounces)
+    })
+}
+
+/// The samples of pixel (`row`, `column`), averaged.
+pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> SampleMean {
+    let mut mean = SampleMean::default();
+    pixel_samples(tracer, row, column).for_each(|sample| mean.add(sample));
     mean
 }
 // ANCHOR_END: pixel

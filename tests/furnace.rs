@@ -6,7 +6,7 @@
 
 use raycourse::{
     Camera, Colour, Lens, Material, Orientation, PixelFilter, Real, Scene, Settings, Sphere,
-    Termination, Tracer, Vec3, pixel_rng,
+    Termination, Tracer, Vec3, pixel_samples,
 };
 
 const SIZE: u32 = 24;
@@ -67,14 +67,11 @@ fn samples(scene: &Scene) -> Vec<Vec<Real>> {
     let mut pixels = Vec::new();
     for row in 0..SIZE {
         for column in 0..SIZE {
-            tracer.rng = pixel_rng(scene.settings.seed, u64::from(row * SIZE + column));
-            let values = (0..scene.settings.samples)
-                .map(|_| {
-                    let ray = scene.camera.ray(row, column, &mut tracer.rng);
-                    tracer.radiance(&ray, scene.settings.bounces).x
-                })
-                .collect();
-            pixels.push(values);
+            pixels.push(
+                pixel_samples(&mut tracer, row, column)
+                    .map(|c| c.x)
+                    .collect(),
+            );
         }
     }
     pixels

@@ -7,7 +7,7 @@
 
 use std::num::NonZeroU32;
 
-use raycourse::{Overrides, Real, Scene, Tracer, find_stage, pixel_rng};
+use raycourse::{Overrides, Real, Scene, Tracer, find_stage, pixel_samples};
 
 const SIZE: u32 = 64;
 /// A 6 x 6 patch of the floor, right of the sphere, lit by the light.
@@ -35,14 +35,8 @@ fn patch(scene: &Scene) -> Vec<Vec<Real>> {
     let mut pixels = Vec::new();
     for row in ROWS {
         for column in COLUMNS {
-            tracer.rng = pixel_rng(scene.settings.seed, u64::from(row * SIZE + column));
-            let values = (0..scene.settings.samples)
-                .map(|_| {
-                    let ray = scene.camera.ray(row, column, &mut tracer.rng);
-                    tracer.radiance(&ray, scene.settings.bounces).element_sum()
-                })
-                .collect();
-            pixels.push(values);
+            let samples = pixel_samples(&mut tracer, row, column);
+            pixels.push(samples.map(|c| c.element_sum()).collect());
         }
     }
     pixels
