@@ -1,6 +1,8 @@
 //! The bounding volume hierarchy of the course: boxes within boxes, so that a ray
 //! tests the triangles of only the few boxes it passes through.
 
+use smallvec::SmallVec;
+
 use crate::aabb::Aabb;
 use crate::math::{Real, Vec3};
 use crate::mesh::{Mesh, MeshHit};
@@ -92,13 +94,14 @@ impl Bvh {
 
     // ANCHOR: traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`. Without
-    /// recursion: a stack holds the nodes still to visit. Of two children, the one
+    /// recursion: a stack (on the call stack unless the tree is very deep) holds the
+    /// nodes still to visit. Of two children, the one
     /// the ray enters first is visited first, and a node whose box the ray enters
     /// beyond the nearest hit found so far is skipped.
     pub fn intersect(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let inv = ray.direction.recip();
         let mut best: Option<MeshHit> = None;
-        let mut stack: Vec<(u32, Real)> = Vec::with_capacity(64);
+        let mut stack: SmallVec<[(u32, Real); 64]> = SmallVec::new();
         if let Some(t) = self.nodes[0].bounds.entry(ray, inv, t_max) {
             stack.push((0, t));
         }

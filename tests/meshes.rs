@@ -249,3 +249,21 @@ fn mesh_stages_render_the_same_bytes_whatever_the_search() {
     #[cfg(feature = "s6")]
     assert_eq!(png(6, "bvh"), brute, "BVH");
 }
+
+#[cfg(feature = "s7")]
+#[test]
+fn a_mesh_without_texture_coordinates_is_not_textured() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("flat.obj"),
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+    )
+    .unwrap();
+    let text = "[render]\nwidth = 8\nheight = 8\n[camera]\nposition = [0, 0, 5]\nfov = 60\n\
+                [[meshes]]\nobj = \"flat.obj\"\ntexture = \"any.png\"\nalbedo = [0.5, 0.5, 0.5]\n";
+    let scene = parse_scene(text, &dir.path().join("scene.toml"), &Overrides::default()).unwrap();
+    assert_eq!(
+        scene.meshes[0].albedo,
+        raycourse::MeshAlbedo::Constant(raycourse::Colour::splat(0.5))
+    );
+}
