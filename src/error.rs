@@ -65,6 +65,12 @@ pub enum SceneError {
     },
 }
 
+/// `text` on one line: every run of whitespace that holds a line break becomes one
+/// space, so that messages from libraries keep the one-line error format.
+pub fn one_line(text: &str) -> String {
+    text.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
 fn key_prefix(key: &str) -> String {
     if key.is_empty() || key == "." {
         String::new()

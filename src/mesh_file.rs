@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use crate::error::SceneError;
+use crate::error::{SceneError, one_line};
 use crate::math::{Colour, Mat3, Vec3};
 use crate::mesh::{Mesh, MeshAlbedo, Placement, Search, read_obj};
 use crate::scene_file::{AccelerationSpec, MeshSpec, require};
@@ -22,7 +22,7 @@ pub fn build_meshes(
         let data = read_obj(&obj).map_err(|e| SceneError::Asset {
             scene: scene.to_owned(),
             file: obj.clone(),
-            message: format!("cannot load the mesh: {e}"),
+            message: format!("cannot load the mesh: {}", one_line(&e)),
         })?;
         let [rx, ry, rz] = spec.rotation.map_or([0.0; 3], |r| r.0.to_array());
         let placement = Placement {

@@ -8,7 +8,7 @@ use serde::Deserialize;
 
 use crate::camera::Camera;
 use crate::camera::{Lens, Orientation, PixelFilter};
-use crate::error::SceneError;
+use crate::error::{SceneError, one_line};
 use crate::features::{SESSION, feature_name};
 use crate::light::{Light, PointLight};
 use crate::material::Material;
@@ -287,7 +287,7 @@ pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<S
             line,
             column,
             key,
-            message: message.replace('\n', " "),
+            message: one_line(message),
         }
     };
     let deserializer = toml::Deserializer::parse(source)

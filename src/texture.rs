@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use crate::error::SceneError;
+use crate::error::{SceneError, one_line};
 use crate::math::{Colour, Real};
 use crate::mesh::{Mesh, ObjData};
 use crate::scene_file::{FilterSpec, MeshSpec};
@@ -110,7 +110,7 @@ pub fn mesh_texture(
         .map_err(|e| SceneError::Asset {
             scene: scene.to_owned(),
             file,
-            message: format!("cannot read the texture: {e}"),
+            message: format!("cannot read the texture: {}", one_line(&e)),
         })
 }
 
