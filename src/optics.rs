@@ -17,17 +17,19 @@ pub fn reflect(incident: Vec3, normal: Vec3) -> Vec3 {
 // ANCHOR: refract
 /// The refracted direction of the unit `incident` through a surface with unit
 /// `normal` on the incident side, where `eta = n1 / n2` is the ratio of the indices
-/// before and after. Snell-Descartes, `n1 sin t1 = n2 sin t2`, gives the tangential
-/// part `eta (d - (d . n) n)` and the normal part `-sqrt(1 - eta^2 (1 - (d . n)^2)) n`.
-/// `None` when the square root's argument is negative: total internal reflection.
+/// before and after. Snell-Descartes, `n1 sin t1 = n2 sin t2`, scales the tangential
+/// part `d_t = d - (d . n) n` by `eta`; the normal part is `-sqrt(1 - eta^2 |d_t|^2) n`.
+/// `sin^2 t1` is taken as `|d_t|^2` rather than `1 - cos^2 t1`, which cancels near
+/// normal incidence. `None` when the square root's argument is negative: total
+/// internal reflection.
 pub fn refract(incident: Vec3, normal: Vec3, eta: Real) -> Option<Vec3> {
-    let cos_i = -incident.dot(normal);
-    let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    let tangential = incident - incident.dot(normal) * normal;
+    let sin2_t = eta * eta * tangential.length_squared();
     if sin2_t > 1.0 {
         return None;
     }
     let cos_t = (1.0 - sin2_t).sqrt();
-    Some(eta * incident + (eta * cos_i - cos_t) * normal)
+    Some(eta * tangential - cos_t * normal)
 }
 // ANCHOR_END: refract
 
