@@ -23,6 +23,8 @@
 //! A feature decides what code exists; a scene file decides what a render uses.
 //! Session 1 is the least a build can have: without `s1` the crate does not compile.
 
+#![warn(missing_docs)]
+
 #[cfg(not(feature = "s1"))]
 compile_error!("raycourse needs at least the first session: enable feature s1 (or a later one)");
 
