@@ -44,7 +44,7 @@ mod tests {
         assert_eq!(display(255.0, 1.0), 255);
         assert_eq!(display(1e9, 2.2), 255);
         // 128^2.2 is the radiance that shows as 128 under gamma 2.2.
-        let mid: Real = 128.0_f64.powf(2.2);
+        let mid: Real = (128.0 as Real).powf(2.2);
         assert_eq!(display(mid, 2.2), 128);
         // Linear output of the same radiance saturates.
         assert_eq!(display(mid, 1.0), 255);

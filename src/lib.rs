@@ -77,6 +77,8 @@ mod texture;
 #[cfg(feature = "s5")]
 mod triangle;
 mod values;
+#[cfg(feature = "s5")]
+mod watertight;
 
 #[cfg(feature = "s5")]
 pub use aabb::*;
@@ -123,3 +125,5 @@ pub use texture::*;
 #[cfg(feature = "s5")]
 pub use triangle::*;
 pub use values::*;
+#[cfg(feature = "s5")]
+pub use watertight::*;

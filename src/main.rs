@@ -107,10 +107,10 @@ enum Command {
         frames: NonZeroU32,
         /// Plunge angle of the first frame, degrees.
         #[arg(long, default_value_t = 0.0)]
-        from: f64,
+        from: raycourse::Real,
         /// Plunge angle of the last frame, degrees.
         #[arg(long, default_value_t = 30.0)]
-        to: f64,
+        to: raycourse::Real,
         #[command(flatten)]
         options: RenderArgs,
     },
@@ -377,7 +377,7 @@ fn render_to_file(
 fn animate(
     name: &str,
     frames: u32,
-    angles: (f64, f64),
+    angles: (raycourse::Real, raycourse::Real),
     options: &RenderArgs,
 ) -> Result<(), Failure> {
     use image::codecs::gif::{GifEncoder, Repeat};
@@ -397,7 +397,7 @@ fn animate(
     let start = Instant::now();
     for k in 0..frames {
         let step = if frames > 1 {
-            f64::from(k) / f64::from(frames - 1)
+            k as raycourse::Real / (frames - 1) as raycourse::Real
         } else {
             0.0
         };

@@ -5,20 +5,50 @@
 
 // ANCHOR: types
 /// The scalar type of every distance, angle and radiance value.
+#[cfg(not(feature = "f32"))]
 pub type Real = f64;
 
 /// A point or a direction in space (x right, y up, z towards the viewer).
+#[cfg(not(feature = "f32"))]
 pub type Vec3 = glam::DVec3;
 
 /// A 3x3 matrix: the rotation that places a mesh.
+#[cfg(not(feature = "f32"))]
 pub type Mat3 = glam::DMat3;
 
-/// Linear radiance in red, green and blue, on the course's scale (see [`crate::Film`]).
-pub type Colour = glam::DVec3;
-// ANCHOR_END: types
+/// A rotation as a unit quaternion: the camera's plunge.
+#[cfg(not(feature = "f32"))]
+pub type Quat = glam::DQuat;
 
 /// The constant pi at the precision of [`Real`].
+#[cfg(not(feature = "f32"))]
 pub const PI: Real = std::f64::consts::PI;
+// ANCHOR_END: types
+
+// ANCHOR: single
+/// The scalar type in single precision (the `f32` feature).
+#[cfg(feature = "f32")]
+pub type Real = f32;
+
+/// A point or a direction in single precision.
+#[cfg(feature = "f32")]
+pub type Vec3 = glam::Vec3;
+
+/// A rotation matrix in single precision.
+#[cfg(feature = "f32")]
+pub type Mat3 = glam::Mat3;
+
+/// A rotation quaternion in single precision.
+#[cfg(feature = "f32")]
+pub type Quat = glam::Quat;
+
+/// The constant pi in single precision.
+#[cfg(feature = "f32")]
+pub const PI: Real = std::f32::consts::PI;
+// ANCHOR_END: single
+
+/// Linear radiance in red, green and blue, on the course's scale (see [`crate::Film`]).
+pub type Colour = Vec3;
 
 /// The machine epsilon of [`Real`] halved: the largest relative error of one
 /// correctly rounded operation, the unit roundoff `u` of floating-point analysis.

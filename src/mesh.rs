@@ -8,7 +8,8 @@ use crate::hit::Hit;
 use crate::material::Material;
 use crate::math::{Colour, Mat3, Real, Vec3, error_bound};
 use crate::ray::Ray;
-use crate::triangle::{TriangleHit, intersect_triangle};
+use crate::triangle::{TriangleHit, TriangleTest, intersect_triangle};
+use crate::watertight::ShearedRay;
 
 /// How a mesh's triangles are searched for the nearest hit. All give the same hit;
 /// only the time differs.
@@ -58,6 +59,8 @@ pub struct Mesh {
     pub bounds: Aabb,
     /// How the nearest triangle is found.
     pub search: Search,
+    /// How one triangle is tested.
+    pub triangle_test: TriangleTest,
     /// Which normal shades it.
     pub shading: Shading,
     /// Its diffuse colour.
@@ -126,14 +129,14 @@ pub fn read_obj(path: &Path) -> Result<ObjData, String> {
     for model in &models {
         let mesh = &model.mesh;
         let first = data.positions.len() as u32;
-        let vec3 = |c: &[f32]| Vec3::new(c[0].into(), c[1].into(), c[2].into());
+        let vec3 = |c: &[f32]| Vec3::new(c[0] as Real, c[1] as Real, c[2] as Real);
         data.positions
             .extend(mesh.positions.chunks_exact(3).map(vec3));
         if with_normals {
             data.normals.extend(mesh.normals.chunks_exact(3).map(vec3));
         }
         if with_uvs {
-            let uv = |c: &[f32]| [c[0].into(), c[1].into()];
+            let uv = |c: &[f32]| [c[0] as Real, c[1] as Real];
             data.uvs.extend(mesh.texcoords.chunks_exact(2).map(uv));
         }
         for corners in mesh.indices.chunks_exact(3) {
@@ -161,8 +164,9 @@ pub fn read_obj(path: &Path) -> Result<ObjData, String> {
 // ANCHOR_END: obj_read
 
 impl Mesh {
-    /// The mesh of `data` placed by `placement`, searched brute force, flat-shaded
-    /// with a white albedo; the scene file then chooses the rest.
+    /// The mesh of `data` placed by `placement`, searched brute force with the
+    /// watertight test, flat-shaded with a white albedo; the scene file then chooses
+    /// the rest.
     pub fn new(data: &ObjData, placement: &Placement) -> Mesh {
         let place = |p: Vec3| placement.rotation * (placement.scale * p) + placement.translation;
         let positions: Vec<Vec3> = data.positions.iter().map(|&p| place(p)).collect();
@@ -179,6 +183,7 @@ impl Mesh {
             triangles: data.triangles.clone(),
             bounds,
             search: Search::BruteForce,
+            triangle_test: TriangleTest::default(),
             shading: Shading::Flat,
             albedo: MeshAlbedo::Constant(Colour::ONE),
         }
@@ -201,10 +206,15 @@ impl Mesh {
         mut best: Option<MeshHit>,
         t_max: Real,
     ) -> Option<MeshHit> {
+        let sheared = ShearedRay::new(ray);
         for triangle in triangles {
             let limit = best.map_or(t_max, |b| b.at.t.next_up());
             let [a, b, c] = self.corners(triangle);
-            if let Some(at) = intersect_triangle(ray, a, b, c, limit)
+            let found = match self.triangle_test {
+                TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, limit),
+                TriangleTest::Watertight => sheared.intersect(a, b, c, limit),
+            };
+            if let Some(at) = found
                 && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
             {
                 best = Some(MeshHit { triangle, at });

@@ -6,13 +6,15 @@ use std::path::Path;
 use crate::error::{SceneError, one_line};
 use crate::math::{Colour, Mat3, Vec3};
 use crate::mesh::{Mesh, MeshAlbedo, Placement, Search, read_obj};
-use crate::scene_file::{AccelerationSpec, MeshSpec, require};
+use crate::scene_file::{AccelerationSpec, MeshSpec, TriangleTestSpec, require};
+use crate::triangle::TriangleTest;
 
 /// The meshes of `specs`, files resolved next to the scene file at `scene`, each
-/// searched as `acceleration` says.
+/// searched as `acceleration` says with the ray-triangle test `triangle_test`.
 pub fn build_meshes(
     specs: &[MeshSpec],
     acceleration: AccelerationSpec,
+    triangle_test: TriangleTestSpec,
     scene: &Path,
 ) -> Result<Vec<Mesh>, SceneError> {
     let folder = scene.parent().unwrap_or(Path::new(""));
@@ -53,6 +55,10 @@ pub fn build_meshes(
                 mesh.albedo = MeshAlbedo::Texture(texture);
             }
         }
+        mesh.triangle_test = match triangle_test {
+            TriangleTestSpec::MollerTrumbore => TriangleTest::MollerTrumbore,
+            TriangleTestSpec::Watertight => TriangleTest::Watertight,
+        };
         mesh.search = search(acceleration, &mesh);
         meshes.push(mesh);
     }

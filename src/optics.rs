@@ -84,7 +84,7 @@ mod tests {
     #[test]
     fn reflection_keeps_the_angle() {
         let n = Vec3::Y;
-        for angle in [0.0_f64, 0.1, 0.7, 1.2, 1.5] {
+        for angle in [0.0 as Real, 0.1, 0.7, 1.2, 1.5] {
             let d = Vec3::new(angle.sin(), -angle.cos(), 0.0);
             let r = reflect(d, n);
             assert!((r.dot(n) - angle.cos()).abs() < 1e-15);
@@ -97,15 +97,15 @@ mod tests {
     fn refraction_obeys_snell() {
         let n = Vec3::Y;
         for (n1, n2) in [(1.0, 1.5), (1.5, 1.0), (1.0, 2.4), (1.33, 1.0)] {
-            for angle in [0.0_f64, 0.2, 0.5, 0.6] {
+            for angle in [0.0 as Real, 0.2, 0.5, 0.6] {
                 let d = Vec3::new(angle.sin(), -angle.cos(), 0.0);
                 let t = refract(d, n, n1 / n2).expect("below the critical angle");
-                assert!((t.length() - 1.0).abs() < 1e-14);
+                assert!((t.length() - 1.0).abs() < 64.0 * Real::EPSILON);
                 assert!(t.dot(n) < 0.0, "the ray crosses the surface");
                 let lhs = n1 * sin_to(d, n);
                 let rhs = n2 * sin_to(t, n);
                 assert!(
-                    (lhs - rhs).abs() < 1e-14,
+                    (lhs - rhs).abs() < 64.0 * Real::EPSILON,
                     "{n1} sin t1 = {lhs}, {n2} sin t2 = {rhs}"
                 );
             }

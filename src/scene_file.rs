@@ -91,6 +91,17 @@ pub enum AccelerationSpec {
     Bvh,
 }
 
+/// `triangle_test = "moller-trumbore"` or `"watertight"`: how a ray meets a triangle.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum TriangleTestSpec {
+    /// The course's barycentric solve (the session-5 stages).
+    MollerTrumbore,
+    /// The watertight test (the default).
+    #[default]
+    Watertight,
+}
+
 /// `[render]`: image size and how the render is done.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -125,6 +136,8 @@ pub struct RenderSpec {
     /// How meshes are searched for the nearest hit (session 5; default none).
     #[serde(default)]
     pub acceleration: AccelerationSpec,
+    /// Which ray-triangle test meshes use (session 5; default watertight).
+    pub triangle_test: Option<TriangleTestSpec>,
 }
 
 fn one() -> NonZeroU32 {
@@ -347,6 +360,9 @@ impl SceneFile {
         if self.render.acceleration != AccelerationSpec::None {
             needs("render.acceleration", 5, "an acceleration structure")?;
         }
+        if self.render.triangle_test.is_some() {
+            needs("render.triangle_test", 5, "triangle meshes")?;
+        }
         if self.render.acceleration == AccelerationSpec::Bvh {
             needs("render.acceleration", 6, "a bounding volume hierarchy")?;
         }
@@ -486,7 +502,12 @@ impl SceneFile {
         };
         Ok(Scene {
             #[cfg(feature = "s5")]
-            meshes: crate::mesh_file::build_meshes(&self.meshes, r.acceleration, path)?,
+            meshes: crate::mesh_file::build_meshes(
+                &self.meshes,
+                r.acceleration,
+                r.triangle_test.unwrap_or_default(),
+                path,
+            )?,
             camera: Camera {
                 position,
                 fov: self.camera.fov.0.to_radians(),

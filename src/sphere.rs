@@ -122,7 +122,10 @@ mod tests {
         assert_eq!(s.intersect(&ray), None);
     }
 
+    /// Offsets of 1e-9 and 1e-6 at 10 are below single precision's resolution:
+    /// tests/extremes.rs compares the two precisions.
     #[test]
+    #[cfg(not(feature = "f32"))]
     fn tangent_and_near_tangent_rays() {
         let s = sphere(Vec3::ZERO, 10.0);
         let tangent = Ray::new(Vec3::new(10.0, 0.0, 55.0), -Vec3::Z);
@@ -131,7 +134,7 @@ mod tests {
         assert_eq!(s.intersect(&outside), None);
         let inside = Ray::new(Vec3::new(10.0 - 1e-6, 0.0, 55.0), -Vec3::Z);
         let t = s.intersect(&inside).unwrap();
-        let expected = 55.0 - (100.0 - (10.0 - 1e-6_f64).powi(2)).sqrt();
+        let expected = 55.0 - (100.0 - (10.0 - 1e-6 as Real).powi(2)).sqrt();
         assert!(close(t, expected, 1e-12), "{t} vs {expected}");
     }
 
@@ -146,8 +149,8 @@ mod tests {
         let along = (-o).dot(ray.direction);
         let miss2 = o.length_squared() - along * along;
         let expected = along - (100.0 - miss2).sqrt();
-        assert!(close(t, expected, 1e-13));
-        assert!(close(ray.at(t).length(), 10.0, 1e-13));
+        assert!(close(t, expected, 256.0 * Real::EPSILON));
+        assert!(close(ray.at(t).length(), 10.0, 256.0 * Real::EPSILON));
     }
 
     #[test]
@@ -157,11 +160,13 @@ mod tests {
             let s = sphere(axis * (1e5 + 10.0), 1e5);
             let ray = Ray::new(Vec3::ZERO, axis);
             let t = s.intersect(&ray).unwrap();
-            assert!(close(t, 10.0, 1e-10), "t = {t}");
+            // Rounding the centre, about 1e5, moves the surface by a few ulps of 1e5.
+            let bound = 4.0 * Real::EPSILON * 1e5 / 10.0;
+            assert!(close(t, 10.0, bound), "t = {t}");
             // From inside the giant sphere, the far side.
             let from_inside = Ray::new(axis * 20.0, axis);
             let t = s.intersect(&from_inside).unwrap();
-            assert!(close(t, 2e5 - 10.0, 1e-12), "t = {t}");
+            assert!(close(t, 2e5 - 10.0, 64.0 * Real::EPSILON), "t = {t}");
         }
     }
 
@@ -174,7 +179,7 @@ mod tests {
         let t = s
             .intersect(&ray)
             .expect("the ray passes through the sphere");
-        let expected = 1e6 - (1e-6 - 25e-8_f64).sqrt();
+        let expected = 1e6 - (1e-6 - 25e-8 as Real).sqrt();
         assert!(close(t, expected, 1e-12), "t = {t}, expected {expected}");
     }
 

@@ -24,22 +24,49 @@ pub struct SphereLight {
 }
 
 // ANCHOR: cone
-/// A direction in the cone around `+z` of half-angle `acos(cos_max)`, uniform per
-/// unit solid angle: `cos(theta) = 1 - u1 (1 - cos_max)`, `phi = 2 pi u2`.
-pub fn sample_cone(u1: Real, u2: Real, cos_max: Real) -> Vec3 {
-    let cos_theta = 1.0 - u1 * (1.0 - cos_max);
-    let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
-    let phi = 2.0 * PI * u2;
-    Vec3::new(phi.cos() * sin_theta, phi.sin() * sin_theta, cos_theta)
+/// The cone of directions around `+z` that meet a sphere seen under the half-angle
+/// `theta_max`. It keeps `1 - cos(theta_max)` as well as the cosine: for a small or
+/// distant light the cosine rounds to 1 and `1 - cos` computed from it would be 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cone {
+    /// `cos(theta_max)`: directions with a larger cosine are inside the cone.
+    pub cos_max: Real,
+    /// `1 - cos(theta_max)`, computed as `sin^2 / (1 + cos)` without cancellation.
+    pub one_minus_cos_max: Real,
 }
 
-/// Density of [`sample_cone`] per unit solid angle: one over the cone's solid angle,
-/// `1 / (2 pi (1 - cos_max))`, inside the cone.
-pub fn cone_pdf(cos_theta: Real, cos_max: Real) -> Real {
-    if cos_theta >= cos_max {
-        1.0 / (2.0 * PI * (1.0 - cos_max))
-    } else {
-        0.0
+impl Cone {
+    /// The cone whose half-angle has `sin^2(theta_max) = sin2` (at most 1).
+    pub fn from_sin2(sin2: Real) -> Self {
+        let cos_max = (1.0 - sin2).sqrt();
+        Self {
+            cos_max,
+            one_minus_cos_max: sin2 / (1.0 + cos_max),
+        }
+    }
+
+    /// A direction in the cone, uniform per unit solid angle:
+    /// `1 - cos(theta) = u1 (1 - cos_max)`, `phi = 2 pi u2`, and
+    /// `sin^2(theta) = (1 - cos)(1 + cos)`, again without cancellation.
+    pub fn sample(&self, u1: Real, u2: Real) -> Vec3 {
+        let one_minus_cos = u1 * self.one_minus_cos_max;
+        let sin_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
+        let phi = 2.0 * PI * u2;
+        Vec3::new(
+            phi.cos() * sin_theta,
+            phi.sin() * sin_theta,
+            1.0 - one_minus_cos,
+        )
+    }
+
+    /// Density of [`Cone::sample`] per unit solid angle: one over the cone's solid
+    /// angle, `1 / (2 pi (1 - cos_max))`, inside the cone.
+    pub fn pdf(&self, cos_theta: Real) -> Real {
+        if cos_theta >= self.cos_max {
+            1.0 / (2.0 * PI * self.one_minus_cos_max)
+        } else {
+            0.0
+        }
     }
 }
 // ANCHOR_END: cone
@@ -70,21 +97,21 @@ impl SphereLight {
     }
     // ANCHOR_END: sphere_light
 
-    /// The cosine of the half-angle under which the light is seen from `point`,
-    /// `sqrt(1 - R^2 / d^2)`, or `None` from inside the light.
-    pub fn cos_max(&self, point: Vec3) -> Option<Real> {
+    /// The cone under which the light is seen from `point`, whose half-angle has
+    /// `sin^2(theta_max) = R^2 / d^2`, or `None` from inside the light.
+    pub fn cone(&self, point: Vec3) -> Option<Cone> {
         let d2 = (self.centre - point).length_squared();
         let sin2 = self.radius * self.radius / d2;
-        (sin2 < 1.0).then(|| (1.0 - sin2).sqrt())
+        (sin2 < 1.0).then(|| Cone::from_sin2(sin2))
     }
 
     /// A direction from `point` towards the light, uniform over the cone of
     /// directions that meet it, with its density per unit solid angle.
     pub fn sample(&self, point: Vec3, u1: Real, u2: Real) -> Option<(Vec3, Real)> {
-        let cos_max = self.cos_max(point)?;
+        let cone = self.cone(point)?;
         let frame = Frame::new((self.centre - point).normalize());
-        let local = sample_cone(u1, u2, cos_max);
-        Some((frame.to_world(local), cone_pdf(local.z, cos_max)))
+        let local = cone.sample(u1, u2);
+        Some((frame.to_world(local), cone.pdf(local.z)))
     }
 }
 
@@ -132,23 +159,25 @@ mod tests {
             assert!(miss2 <= 25.0 * (1.0 + 1e-12), "the ray meets the sphere");
             assert!(pdf > 0.0);
         }
-        assert!(light.cos_max(light.centre + Vec3::X).is_none());
+        assert!(light.cone(light.centre + Vec3::X).is_none());
     }
 
     #[test]
     fn small_far_light_matches_a_point_light() {
         // Le (albedo/pi) cos / pdf integrates to I / (4 pi d^2) cos albedo / pi as
         // R -> 0: the solid angle 1/pdf tends to pi R^2 / d^2.
-        let (r, d): (Real, Real) = (1e-2, 50.0);
-        let light = SphereLight {
-            centre: Vec3::new(0.0, d, 0.0),
-            radius: r,
-            emission: Colour::ONE,
-            object: 0,
-        };
-        let cos_max = light.cos_max(Vec3::ZERO).unwrap();
-        let solid_angle = 1.0 / cone_pdf(1.0, cos_max);
-        let expected = PI * r * r / (d * d);
-        assert!((solid_angle - expected).abs() < 1e-6 * expected);
+        for (r, d) in [(1e-2, 50.0), (1.0, 1e9), (1e-6, 1e3)] {
+            let light = SphereLight {
+                centre: Vec3::new(0.0, d, 0.0),
+                radius: r,
+                emission: Colour::ONE,
+                object: 0,
+            };
+            let cone = light.cone(Vec3::ZERO).unwrap();
+            let solid_angle = 1.0 / cone.pdf(1.0);
+            let expected = PI * r * r / (d * d);
+            let relative = (solid_angle - expected).abs() / expected;
+            assert!(relative < 1e-4, "R = {r}, d = {d}: {relative}");
+        }
     }
 }

@@ -15,6 +15,20 @@ pub struct TriangleHit {
     pub gamma: Real,
 }
 
+/// Which ray-triangle test a mesh uses. Both find the same hits, up to rounding;
+/// they differ where rounding decides, on the edges shared by two triangles.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum TriangleTest {
+    /// Moller and Trumbore's barycentric solve ([`intersect_triangle`]): the course's
+    /// version, used by the session-5 stages. A ray through a shared edge can,
+    /// rarely, miss both triangles.
+    MollerTrumbore,
+    /// Woop, Benthin and Wald's watertight test ([`crate::ShearedRay`]): no ray slips
+    /// between two triangles that share an edge.
+    #[default]
+    Watertight,
+}
+
 // ANCHOR: intersect_triangle
 /// Where `ray` meets the triangle `(a, b, c)` at a distance in `(0, t_max)`, if it does.
 ///

@@ -145,7 +145,7 @@ mod tests {
         assert!(Positive::try_from(0.0).is_err());
         assert!(Positive::try_from(Real::NAN).is_err());
         assert_eq!(Positive::try_from(2.0), Ok(Positive(2.0)));
-        assert!(NonNegative::try_from(-1e-300).is_err());
+        assert!(NonNegative::try_from(-Real::MIN_POSITIVE).is_err());
         assert!(NonNegative::try_from(Real::INFINITY).is_err());
         assert!(Degrees::try_from(180.0).is_err());
         assert!(Probability::try_from(0.0).is_err());

@@ -5,7 +5,7 @@
 //! pooled; the statistic's p-value comes from the chi-square distribution, and the
 //! sampler is rejected below 1%. Each test has a twin with a deliberately wrong pdf,
 //! which must be rejected: a test that cannot fail proves nothing.
-#![cfg(feature = "s3")]
+#![cfg(all(feature = "s3", not(feature = "f32")))]
 
 use raycourse::{PI, PixelRng, Real, pixel_rng, uniform};
 use statrs::distribution::{ChiSquared, ContinuousCDF};
@@ -180,7 +180,7 @@ mod disk {
 #[cfg(feature = "s4")]
 mod light_cone {
     use super::*;
-    use raycourse::{Frame, SphereLight, Vec3, cone_pdf};
+    use raycourse::{Cone, Frame, SphereLight, Vec3};
 
     /// A light close to the shaded point, so the cone is wide (half-angle 42 degrees).
     fn light() -> SphereLight {
@@ -194,34 +194,38 @@ mod light_cone {
     /// `d omega = 2 pi (1 - cos_max) du dv`.
     fn sample(rng: &mut PixelRng) -> (Real, Real) {
         let light = light();
-        let cos_max = light.cos_max(POINT).unwrap();
+        let cone = light.cone(POINT).unwrap();
         let (direction, _) = light.sample(POINT, uniform(rng), uniform(rng)).unwrap();
         let local = Frame::new((light.centre - POINT).normalize()).to_local(direction);
         let (_, v) = hemisphere_coordinates(local.x, local.y, local.z);
-        (((1.0 - local.z) / (1.0 - cos_max)).clamp(0.0, 1.0), v)
+        (
+            ((1.0 - local.z) / cone.one_minus_cos_max).clamp(0.0, 1.0),
+            v,
+        )
     }
 
-    fn density(pdf: impl Fn(Real, Real) -> Real) -> impl Fn(Real, Real) -> Real {
-        let cos_max = light().cos_max(POINT).unwrap();
+    fn density(pdf: impl Fn(&Cone, Real) -> Real) -> impl Fn(Real, Real) -> Real {
+        let cone = light().cone(POINT).unwrap();
         move |u, _| {
-            let cos_theta = 1.0 - u * (1.0 - cos_max);
-            pdf(cos_theta, cos_max) * 2.0 * PI * (1.0 - cos_max)
+            let cos_theta = 1.0 - u * cone.one_minus_cos_max;
+            pdf(&cone, cos_theta) * 2.0 * PI * cone.one_minus_cos_max
         }
     }
 
     #[test]
     fn matches_its_pdf() {
-        let p = p_value(sample, density(cone_pdf));
+        let p = p_value(sample, density(Cone::pdf));
         assert!(accepted(p), "p = {p}");
         let (_, pdf) = light().sample(POINT, 0.3, 0.6).unwrap();
-        let cos_max = light().cos_max(POINT).unwrap();
-        assert_eq!(pdf, cone_pdf(1.0, cos_max), "sample() returns the cone pdf");
+        let cone = light().cone(POINT).unwrap();
+        assert_eq!(pdf, cone.pdf(1.0), "sample() returns the cone pdf");
     }
 
     #[test]
     fn rejects_a_cosine_weighted_pdf() {
         // Normalised over the cone, but proportional to cos(theta).
-        let wrong = |cos_theta: Real, cos_max: Real| cos_theta / (PI * (1.0 - cos_max * cos_max));
+        let wrong =
+            |cone: &Cone, cos_theta: Real| cos_theta / (PI * (1.0 - cone.cos_max * cone.cos_max));
         let p = p_value(sample, density(wrong));
         assert!(!accepted(p), "p = {p}");
     }

@@ -18,7 +18,7 @@ fn asset(path: &str) -> PathBuf {
 }
 
 fn distinct_positions(data: &ObjData) -> usize {
-    let keys: HashSet<[u64; 3]> = data
+    let keys: HashSet<_> = data
         .positions
         .iter()
         .map(|p| p.to_array().map(Real::to_bits))
