@@ -48,22 +48,29 @@ impl Aabb {
     /// The distance at which `ray` enters the box, if it meets it before `t_max`.
     ///
     /// The slab test: between the two planes `x = min.x` and `x = max.x` the ray
-    /// spends `t` in `[(min.x - o.x) / d.x, (max.x - o.x) / d.x]` (swapped if `d.x < 0`);
-    /// it is inside the box where the three intervals overlap. `inv_direction`
-    /// holds `1 / d` per axis, computed once per ray. A zero component gives
-    /// infinite bounds of the right signs; when the origin also lies on that slab's
-    /// plane, `0 * inf` is NaN, and the comparisons below, false for NaN, leave the
-    /// interval unconstrained on that axis, as they should. The exit distance is
-    /// widened by `1 + 2 gamma(3)` (pbrt-v4) so that rounding never misses a box
-    /// that a triangle hit inside it proves the ray reaches.
+    /// spends `t` in `[(min.x - o.x) / d.x, (max.x - o.x) / d.x]`, the planes taken in
+    /// the other order when `d.x` is negative; it is inside the box where the three
+    /// intervals overlap. `inv_direction` holds `1 / d` per axis, computed once per
+    /// ray. The order of the planes is chosen by the sign of `1 / d`, not by
+    /// comparing the two distances: a zero component gives infinities whose signs
+    /// follow the zero's (`1 / -0 = -inf`), and when the origin also lies on one of
+    /// the planes, `0 * inf` is NaN. The comparisons below, false for NaN, then leave
+    /// the interval unconstrained on that axis, as they should for a ray lying in the
+    /// face. The exit distance is widened by `1 + 2 gamma(3)` (pbrt-v4) so that
+    /// rounding never misses a box that a triangle hit inside it proves the ray
+    /// reaches.
     #[inline]
     pub fn entry(&self, ray: &Ray, inv_direction: Vec3, t_max: Real) -> Option<Real> {
         let (mut near, mut far) = (0.0, t_max);
         for axis in 0..3 {
-            let t1 = (self.min[axis] - ray.origin[axis]) * inv_direction[axis];
-            let t2 = (self.max[axis] - ray.origin[axis]) * inv_direction[axis];
-            let (t1, t2) = if t1 > t2 { (t2, t1) } else { (t1, t2) };
-            let t2 = t2 * (1.0 + 2.0 * error_bound(3));
+            let inv = inv_direction[axis];
+            let (first, second) = if inv.is_sign_negative() {
+                (self.max[axis], self.min[axis])
+            } else {
+                (self.min[axis], self.max[axis])
+            };
+            let t1 = (first - ray.origin[axis]) * inv;
+            let t2 = (second - ray.origin[axis]) * inv * (1.0 + 2.0 * error_bound(3));
             if t1 > near {
                 near = t1;
             }

@@ -1,5 +1,4 @@
-//! The watertight ray-triangle test of Woop, Benthin and Wald (JCGT 2013), with the
-//! conservative distance bound of pbrt-v4 (section 6.8.4).
+//! The watertight ray-triangle test of Woop, Benthin and Wald (JCGT 2013).
 //!
 //! The course's test ([`crate::intersect_triangle`]) computes each barycentric
 //! coordinate from the triangle's own edge vectors, so two triangles sharing an edge
@@ -9,7 +8,7 @@
 //! cross product of the edge's two transformed vertices. Both triangles of a shared
 //! edge compute that product from the same two numbers, so they always agree.
 
-use crate::math::{Real, Vec3, error_bound};
+use crate::math::{Real, Vec3};
 use crate::ray::Ray;
 use crate::triangle::TriangleHit;
 
@@ -67,22 +66,18 @@ impl ShearedRay {
     /// `e1 = c_x a_y - c_y a_x` and `e2 = a_x b_y - a_y b_x` are twice the signed
     /// areas of the triangles the ray's axis makes with each edge. The ray meets the
     /// triangle when they share a sign (either side is hit); they are the
-    /// barycentric weights of `a`, `b` and `c` once divided by their sum. An edge
-    /// function that rounds to exactly 0 is recomputed exactly, so that a ray
-    /// through a vertex or an edge is decided by the true sign. The distance is
-    /// `t = (e0 a_z + e1 b_z + e2 c_z) s_z / (e0 + e1 + e2)`, accepted only above its
-    /// own rounding error (pbrt-v4), so a ray never hits the triangle it left.
+    /// barycentric weights of `a`, `b` and `c` once divided by their sum (see
+    /// [`edge`] for how a shared edge is kept consistent). The distance is
+    /// `t = (e0 a_z + e1 b_z + e2 c_z) s_z / (e0 + e1 + e2)`. A ray spawned from a
+    /// surface starts beyond the error bound of its hit point ([`crate::Hit::spawn`]),
+    /// so it cannot meet the triangle it left again; pbrt-v4 also refuses any `t`
+    /// below a bound on its own rounding error, but that bound grows without limit
+    /// for a triangle seen nearly edge-on, whose hits it would then refuse far from
+    /// the origin, and rays would slip through between its neighbours.
     #[inline]
     pub fn intersect(&self, a: Vec3, b: Vec3, c: Vec3, t_max: Real) -> Option<TriangleHit> {
         let (a, b, c) = (self.transform(a), self.transform(b), self.transform(c));
-        let mut e0 = b.x * c.y - b.y * c.x;
-        let mut e1 = c.x * a.y - c.y * a.x;
-        let mut e2 = a.x * b.y - a.y * b.x;
-        if e0 == 0.0 || e1 == 0.0 || e2 == 0.0 {
-            e0 = exact_difference_of_products(b.x, c.y, b.y, c.x);
-            e1 = exact_difference_of_products(c.x, a.y, c.y, a.x);
-            e2 = exact_difference_of_products(a.x, b.y, a.y, b.x);
-        }
+        let (e0, e1, e2) = (edge(b, c), edge(c, a), edge(a, b));
         if (e0 < 0.0 || e1 < 0.0 || e2 < 0.0) && (e0 > 0.0 || e1 > 0.0 || e2 > 0.0) {
             return None;
         }
@@ -94,29 +89,32 @@ impl ShearedRay {
         let (az, bz, cz) = (a.z * sz, b.z * sz, c.z * sz);
         let inv_det = 1.0 / det;
         let t = (e0 * az + e1 * bz + e2 * cz) * inv_det;
-        if !(t < t_max) {
-            return None;
-        }
-        // pbrt-v4's bound on the rounding error of t, built up from the errors of
-        // the transformed coordinates and of the edge functions.
-        let max_x = a.x.abs().max(b.x.abs()).max(c.x.abs());
-        let max_y = a.y.abs().max(b.y.abs()).max(c.y.abs());
-        let max_z = az.abs().max(bz.abs()).max(cz.abs());
-        let delta_x = error_bound(5) * (max_x + max_z);
-        let delta_y = error_bound(5) * (max_y + max_z);
-        let delta_z = error_bound(3) * max_z;
-        let delta_e = 2.0 * (error_bound(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
-        let max_e = e0.abs().max(e1.abs()).max(e2.abs());
-        let delta_t = 3.0
-            * (error_bound(3) * max_e * max_z + delta_e * max_z + delta_z * max_e)
-            * inv_det.abs();
-        (t > delta_t).then_some(TriangleHit {
+        (t > 0.0 && t < t_max).then_some(TriangleHit {
             t,
             beta: e1 * inv_det,
             gamma: e2 * inv_det,
         })
     }
     // ANCHOR_END: watertight
+}
+
+/// The edge function of the edge from `p` to `q` in the ray's frame,
+/// `p_x q_y - p_y q_x`: on which side of the edge the ray passes. The triangle on the
+/// other side of the edge computes `q_x p_y - q_y p_x`, exactly the negation, since
+/// products commute and rounding is symmetric: the two never disagree. A value that
+/// rounds to exactly 0 (the ray through the edge, or nearly) is recomputed with
+/// its true sign; the neighbour, seeing the same 0, does the same. Woop et al.
+/// recompute all three edges when any one is 0, which can decide the *other* edges
+/// differently from the neighbours that share them: rays aimed at vertices slip
+/// through. Deciding edge by edge keeps every shared edge consistent.
+#[inline]
+fn edge(p: Vec3, q: Vec3) -> Real {
+    let e = p.x * q.y - p.y * q.x;
+    if e == 0.0 {
+        exact_difference_of_products(p.x, q.y, p.y, q.x)
+    } else {
+        e
+    }
 }
 
 /// `a b - c d` with its sign exactly right (0 only when it is exactly 0), by
