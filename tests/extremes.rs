@@ -200,3 +200,177 @@ mod optics {
         );
     }
 }
+
+/// Rays that skim a surface at angles down to 1e-7 rad, rays lying in the faces of
+/// a box, and rays that start exactly on a surface.
+mod grazing {
+    use super::*;
+
+    /// The angles of the grazing rays, in radians.
+    const ANGLES: [Real; 7] = [1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7];
+
+    /// A ray at `angle` to the plane `y = target.y` that meets it at `target`,
+    /// coming from 10 units away.
+    fn grazing_ray(target: Vec3, angle: Real) -> Ray {
+        let d = Vec3::new(angle.cos(), -angle.sin(), 0.0);
+        Ray::new(target - 10.0 * d, d)
+    }
+
+    #[test]
+    fn grazing_rays_meet_a_sphere_where_they_should() {
+        // The ray enters the unit sphere at its top, (0, 1, 0), at `angle` to the
+        // tangent plane. Where along the surface it enters is ill-conditioned, by
+        // 1 / angle: the hit may move by eps / angle along the surface, but it must
+        // be found and lie on the surface.
+        let s = sphere(Vec3::ZERO, 1.0);
+        let target = Vec3::Y;
+        let mut found = Vec::new();
+        for angle in ANGLES {
+            let ray = grazing_ray(target, angle);
+            let Some(t) = s.intersect(&ray) else {
+                continue;
+            };
+            found.push(angle);
+            let along = (ray.at(t) - target).length() * angle / Real::EPSILON;
+            eprintln!("sphere, {angle:e} rad: {along:.2} eps / angle from the target");
+            assert!(surface_error(&s, &ray, t) <= 4.0, "{angle}");
+            assert!(along <= 64.0, "{angle}: {along}");
+        }
+        // In both precisions: the stable formula's discriminant is computed from
+        // the ray's distance to the centre, not as a difference of squares.
+        assert_eq!(found, ANGLES, "every grazing ray enters");
+    }
+
+    #[cfg(feature = "s5")]
+    #[test]
+    fn grazing_rays_meet_a_triangle_where_they_should() {
+        use raycourse::{ShearedRay, intersect_triangle};
+        let (a, b, c) = (
+            Vec3::new(-100.0, 0.0, -100.0),
+            Vec3::new(100.0, 0.0, -100.0),
+            Vec3::new(0.0, 0.0, 100.0),
+        );
+        let target = Vec3::new(0.5, 0.0, 0.25);
+        for angle in ANGLES {
+            let ray = grazing_ray(target, angle);
+            let watertight = ShearedRay::new(&ray).intersect(a, b, c, Real::INFINITY);
+            let course = intersect_triangle(&ray, a, b, c, Real::INFINITY);
+            for hit in [watertight, course] {
+                let t = hit.expect("a plane is never missed at a grazing angle").t;
+                let along = (ray.at(t) - target).length() * angle / Real::EPSILON;
+                eprintln!("triangle, {angle:e} rad: {along:.2} eps / angle from the target");
+                assert!(along <= 64.0, "{angle}: {along}");
+            }
+        }
+    }
+
+    #[cfg(feature = "s5")]
+    #[test]
+    fn rays_in_the_faces_of_a_box_give_no_nan() {
+        use raycourse::Aabb;
+        let unit = Aabb::EMPTY.grow(Vec3::ZERO).grow(Vec3::ONE);
+        let entry = |origin: Vec3, direction: Vec3| {
+            let ray = Ray::new(origin, direction);
+            unit.entry(&ray, ray.direction.recip(), Real::INFINITY)
+        };
+        for zero in [0.0, -0.0] {
+            let along_z = Vec3::new(zero, zero, 1.0);
+            // In the faces x = 0 and x = 1, and along the edge x = y = 0: inside.
+            for o in [
+                Vec3::new(0.0, 0.5, -1.0),
+                Vec3::new(1.0, 0.5, -1.0),
+                Vec3::new(0.0, 0.0, -1.0),
+                Vec3::new(1.0, 1.0, -1.0),
+            ] {
+                assert_eq!(entry(o, along_z), Some(1.0), "{o} {along_z}");
+            }
+            // Just outside a face, parallel to it: missed.
+            let outside = Vec3::new(-Real::EPSILON, 0.5, -1.0);
+            assert_eq!(entry(outside, along_z), None);
+            // Starting inside: entered at 0.
+            assert_eq!(entry(Vec3::splat(0.5), along_z), Some(0.0));
+        }
+    }
+
+    #[test]
+    fn rays_starting_on_a_sphere() {
+        let s = sphere(Vec3::ZERO, 1.0);
+        let on = Vec3::X;
+        assert_eq!(s.intersect(&Ray::new(on, Vec3::X)), None, "leaving it");
+        assert_eq!(
+            s.intersect(&Ray::new(on, Vec3::Y)),
+            None,
+            "along its tangent"
+        );
+        assert_eq!(s.intersect(&Ray::new(on, -Vec3::X)), Some(2.0), "across it");
+    }
+}
+
+/// A mesh with everything wrong that a file can legally hold: zero-area and
+/// repeated-vertex triangles, zero-length and NaN normals, texture coordinates far
+/// outside [0, 1] and NaN, and a 1x1 texture. It renders, smooth and textured, with
+/// indirect light, to a film with no NaN or infinite value.
+#[cfg(feature = "s7")]
+#[test]
+fn degenerate_meshes_render_without_nan() {
+    use indicatif::ProgressBar;
+    use raycourse::{Overrides, parse_scene, render};
+
+    let dir = tempfile::tempdir().unwrap();
+    image::RgbImage::from_pixel(1, 1, image::Rgb([200, 120, 40]))
+        .save(dir.path().join("one.png"))
+        .unwrap();
+    let obj = "\
+v -10 -10 -20\nv 10 -10 -20\nv 0 10 -20\nv 20 -10 -20\nv -10 -10 -20\n\
+vn nan nan nan\nvn 0 0 0\nvn 0 0 1\n\
+vt nan nan\nvt 1e30 -1e30\nvt 0.5 0.5\n\
+f 1/1/1 2/2/2 3/3/3\n\
+f 1/3/3 2/3/3 4/3/3\n\
+f 1/3/3 5/3/3 2/3/3\n\
+f 3/2/2 3/2/2 3/2/2\n\
+f 1/2/2 2/1/1 3/3/3\n";
+    std::fs::write(dir.path().join("bad.obj"), obj).unwrap();
+    let scene_text = r#"
+[render]
+width = 32
+height = 32
+samples = 4
+gamma = 2.2
+indirect = true
+acceleration = "bvh"
+
+[camera]
+position = [0, 0, 30]
+fov = 60
+
+[light]
+position = [0, 20, 20]
+intensity = 1e5
+
+[[meshes]]
+obj = "bad.obj"
+smooth_normals = true
+textured = true
+texture = "one.png"
+
+[[spheres]]
+centre = [0, -1000, 0]
+radius = 990
+material = { diffuse = [0.8, 0.8, 0.8] }
+"#;
+    let path = dir.path().join("scene.toml");
+    let scene = parse_scene(scene_text, &path, &Overrides::default()).unwrap();
+    let result = render(&scene, &ProgressBar::hidden());
+    assert!(result.film.pixels.iter().all(|p| p.is_finite()));
+    assert_eq!(result.dropped, 0, "no sample was NaN or infinite");
+    let lit = result
+        .film
+        .pixels
+        .iter()
+        .filter(|p| p.max_element() > 0.0)
+        .count();
+    assert!(
+        lit > 100,
+        "the mesh and the floor are seen: {lit} lit pixels"
+    );
+}
