@@ -17,11 +17,10 @@
 use indicatif::ProgressBar;
 use raycourse::{
     Hit, Light, Overrides, PixelRng, Ray, Real, Scene, Tracer, Vec3, encode_png, find_stage,
-    parse_scene, pixel_rng, render, uniform,
+    pixel_rng, render, uniform,
 };
 use rayon::prelude::*;
 use std::num::NonZeroU32;
-use std::path::Path;
 
 /// Whether this build computes in double precision.
 const DOUBLE: bool = cfg!(not(feature = "f32"));
@@ -264,6 +263,8 @@ fn the_room_looks_the_same_at_every_scale() {
 #[cfg(feature = "s6")]
 #[test]
 fn spot_looks_the_same_at_every_scale() {
+    use raycourse::parse_scene;
+    use std::path::Path;
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("sessions/s6");
     let text = std::fs::read_to_string(folder.join("bvh.toml"))
         .unwrap()
