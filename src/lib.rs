@@ -63,6 +63,7 @@ mod render;
 mod rng;
 #[cfg(feature = "s3")]
 mod sampling;
+mod scale;
 mod scene;
 mod scene_file;
 #[cfg(feature = "s6")]

@@ -16,8 +16,8 @@
 
 use indicatif::ProgressBar;
 use raycourse::{
-    Hit, Light, Overrides, PixelRng, Ray, Real, Scene, Tracer, Vec3, encode_png, find_stage,
-    pixel_rng, render, uniform,
+    Hit, Overrides, PixelRng, Ray, Real, Scene, Tracer, Vec3, encode_png, find_stage, pixel_rng,
+    render, uniform,
 };
 use rayon::prelude::*;
 use std::num::NonZeroU32;
@@ -34,38 +34,6 @@ const SPAWNED: u64 = 1_000_000;
 
 /// Image size of the comparison renders.
 const SIZE: u32 = 64;
-
-/// The same scene made `s` times larger about the origin and then moved by `shift`.
-/// The light's intensity grows with the square of the scale, so that what each
-/// surface receives, `I cos / d^2`, and therefore the image, is unchanged.
-fn scaled(scene: &Scene, s: Real, shift: Vec3) -> Scene {
-    let place = |p: Vec3| p * s + shift;
-    let mut out = scene.clone();
-    out.camera.position = place(out.camera.position);
-    for sphere in &mut out.spheres {
-        sphere.centre = place(sphere.centre);
-        sphere.radius *= s;
-    }
-    if let Some(Light::Point(light)) = &mut out.light {
-        light.position = place(light.position);
-        light.intensity *= s * s;
-    }
-    #[cfg(feature = "s5")]
-    for mesh in &mut out.meshes {
-        for p in &mut mesh.positions {
-            *p = place(*p);
-        }
-        mesh.bounds = mesh
-            .positions
-            .iter()
-            .fold(raycourse::Aabb::EMPTY, |b, &p| b.grow(p));
-        #[cfg(feature = "s6")]
-        if let raycourse::Search::Bvh(_) = mesh.search {
-            mesh.search = raycourse::Search::Bvh(raycourse::Bvh::build(mesh));
-        }
-    }
-    out
-}
 
 /// A direction uniform over the sphere of directions.
 fn random_direction(rng: &mut PixelRng) -> Vec3 {
@@ -183,7 +151,7 @@ fn sweep(scene: &Scene, shadow: Vec3, lit: Vec3) -> Vec<ScaleResult> {
     SCALES
         .iter()
         .map(|&s| {
-            let big = scaled(scene, s, SHIFT);
+            let big = scene.scaled(s, SHIFT);
             let (spawned, self_hits, without_offset) = spawn_survey(&big, SPAWNED);
             let result = ScaleResult {
                 scale: s,
@@ -279,7 +247,7 @@ fn spot_looks_the_same_at_every_scale() {
         ..Overrides::default()
     };
     let scene = parse_scene(&text, &folder.join("spot-shadows.toml"), &overrides).unwrap();
-    assert!(matches!(scene.light, Some(Light::Point(_))));
+    assert!(matches!(scene.light, Some(raycourse::Light::Point(_))));
     // Beside the cow's front hoof, on the side away from the light, the floor is in
     // its shadow.
     let results = sweep(&scene, floor(4.0, 2.0), floor(-20.0, 10.0));
