@@ -108,6 +108,9 @@ pub struct ObjData {
 /// models of the file are merged; normals or texture coordinates are kept only if
 /// every model has them. A missing or broken MTL file only loses the texture.
 pub fn read_obj(path: &Path) -> Result<ObjData, String> {
+    if let Ok(bytes) = std::fs::read(path) {
+        check_face_indices(&String::from_utf8_lossy(&bytes))?;
+    }
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
@@ -162,6 +165,43 @@ pub fn read_obj(path: &Path) -> Result<ObjData, String> {
     Ok(data)
 }
 // ANCHOR_END: obj_read
+
+/// Checks every index of every `f` line before tobj sees the file: an index counts
+/// from 1, or from the end of what was read so far when negative (`-1` is the last),
+/// and must name a `v`, `vt` or `vn` line already read. tobj itself would turn an
+/// out-of-range negative index into an overflowing arithmetic on `usize`.
+fn check_face_indices(text: &str) -> Result<(), String> {
+    let mut counts = [0i64; 3];
+    for (number, line) in text.lines().enumerate() {
+        let mut words = line.split_whitespace();
+        match words.next() {
+            Some("v") => counts[0] += 1,
+            Some("vt") => counts[1] += 1,
+            Some("vn") => counts[2] += 1,
+            Some("f") => {
+                for corner in words {
+                    for ((what, count), field) in ["vertex", "texture coordinate", "normal"]
+                        .iter()
+                        .zip(counts)
+                        .zip(corner.split('/'))
+                    {
+                        let Ok(index) = field.parse::<i64>() else {
+                            continue;
+                        };
+                        if index == 0 || index.unsigned_abs() > count.unsigned_abs() {
+                            return Err(format!(
+                                "line {}: {what} index {index} is out of range ({count} read so far)",
+                                number + 1
+                            ));
+                        }
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
 
 impl Mesh {
     /// The mesh of `data` placed by `placement`, searched brute force with the

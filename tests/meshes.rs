@@ -149,8 +149,8 @@ fn an_out_of_range_index_is_refused() {
             "obj = \"bad.obj\"",
             &[("bad.obj", b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n")]
         ),
-        "DIR/bad.obj: cannot load the mesh: face vertex index out of bounds (referred to by \
-         DIR/scene.toml)"
+        "DIR/bad.obj: cannot load the mesh: line 4: vertex index 7 is out of range \
+         (3 read so far) (referred to by DIR/scene.toml)"
     );
 }
 
