@@ -27,6 +27,14 @@ impl Aabb {
         }
     }
 
+    /// The smallest box containing this box and `other`.
+    pub fn union(self, other: &Aabb) -> Aabb {
+        Aabb {
+            min: self.min.min(other.min),
+            max: self.max.max(other.max),
+        }
+    }
+
     /// The centre of the box.
     pub fn centre(&self) -> Vec3 {
         (self.min + self.max) * 0.5

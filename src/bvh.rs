@@ -133,11 +133,34 @@ impl Bvh {
         best
     }
     // ANCHOR_END: traverse
+
+    /// Whether `ray` meets any triangle of `mesh` closer than `t_max`: the same walk
+    /// through the boxes, in any order, ending at the first triangle hit.
+    pub fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
+        let inv = ray.direction.recip();
+        let mut stack: SmallVec<[u32; 64]> = SmallVec::new();
+        stack.push(0);
+        while let Some(index) = stack.pop() {
+            let node = self.nodes[index as usize];
+            if node.bounds.entry(ray, inv, t_max).is_none() {
+                continue;
+            }
+            if node.count > 0 {
+                let leaf = &self.order[node.first as usize..(node.first + node.count) as usize];
+                if mesh.hits_any(ray, leaf.iter().copied(), t_max) {
+                    return true;
+                }
+            } else {
+                stack.extend([node.first, node.first + 1]);
+            }
+        }
+        false
+    }
 }
 
 /// Moves the elements for which `left` holds to the front of `items` and returns
 /// how many there are (the order within each side is not kept).
-fn partition(items: &mut [u32], left: impl Fn(&u32) -> bool) -> usize {
+pub(crate) fn partition(items: &mut [u32], left: impl Fn(&u32) -> bool) -> usize {
     let mut boundary = 0;
     for i in 0..items.len() {
         if left(&items[i]) {

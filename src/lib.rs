@@ -59,8 +59,12 @@ mod optics;
 mod png;
 mod radiance;
 mod ray;
+#[cfg(feature = "s6")]
+mod rayset;
 mod render;
 mod rng;
+#[cfg(feature = "s6")]
+mod sah;
 #[cfg(feature = "s3")]
 mod sampling;
 mod scale;
@@ -110,6 +114,8 @@ pub use optics::*;
 pub use png::*;
 pub use radiance::*;
 pub use ray::*;
+#[cfg(feature = "s6")]
+pub use rayset::*;
 pub use render::*;
 pub use rng::*;
 #[cfg(feature = "s3")]

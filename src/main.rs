@@ -122,6 +122,22 @@ enum Command {
         #[arg(long)]
         threads: Option<NonZeroUsize>,
     },
+    /// Trace ray sets (`.rays` files of the Embree benchmark) against a mesh on one
+    /// thread and on all, and print Mrays/s with the format's checksums.
+    #[cfg(feature = "s6")]
+    Rays {
+        /// The mesh (OBJ).
+        mesh: PathBuf,
+        /// One or more ray sets.
+        #[arg(required = true)]
+        sets: Vec<PathBuf>,
+        /// Timed passes per measurement (the median is printed).
+        #[arg(long, default_value = "5")]
+        passes: usize,
+        /// Thread counts to measure (default: 1 and one per core).
+        #[arg(long, value_delimiter = ',')]
+        threads: Vec<NonZeroUsize>,
+    },
     /// Render every stage of this build at the course's settings into a folder, as
     /// `<stage>.png`: the book's figures.
     Figures {
@@ -191,6 +207,12 @@ enum Failure {
     #[cfg(feature = "s7")]
     #[error("cannot encode the animation: {0}")]
     Gif(image::ImageError),
+    #[cfg(feature = "s6")]
+    #[error("{}: cannot load the mesh: {message}", path.display())]
+    Mesh { path: PathBuf, message: String },
+    #[cfg(feature = "s6")]
+    #[error(transparent)]
+    RaySet(#[from] raycourse::RaySetError),
     #[error("{}: cannot write the image: {source}", path.display())]
     Write {
         path: PathBuf,
@@ -203,6 +225,8 @@ impl Failure {
     fn exit_code(&self) -> ExitCode {
         match self {
             Self::Scene(_) => ExitCode::from(2),
+            #[cfg(feature = "s6")]
+            Self::Mesh { .. } | Self::RaySet(_) => ExitCode::from(2),
             #[cfg(feature = "s7")]
             Self::NotAimed(_) => ExitCode::from(2),
             _ => ExitCode::FAILURE,
@@ -261,6 +285,13 @@ fn run(cli: Cli) -> Result<(), Failure> {
         }) => animate(&stage, frames.get(), (from, to), &options),
         #[cfg(feature = "s5")]
         Some(Command::Bench { threads }) => bench(threads),
+        #[cfg(feature = "s6")]
+        Some(Command::Rays {
+            mesh,
+            sets,
+            passes,
+            threads,
+        }) => rays(&mesh, &sets, passes, &threads),
         Some(Command::Figures { dir, quiet }) => stages().try_for_each(|stage| {
             let options = RenderArgs {
                 out: Some(dir.join(format!("{}.png", stage.name))),
@@ -473,6 +504,67 @@ fn bench(threads: Option<NonZeroUsize>) -> Result<(), Failure> {
             timed.result.rays as f64 / timed.seconds / 1e6,
             course_time(stage.name)
         );
+    }
+    Ok(())
+}
+
+/// Loads `mesh`, builds its BVH, and times each ray set on each thread count.
+#[cfg(feature = "s6")]
+fn rays(
+    mesh: &Path,
+    sets: &[PathBuf],
+    passes: usize,
+    threads: &[NonZeroUsize],
+) -> Result<(), Failure> {
+    use raycourse::{Bvh, Mat3, Mesh, Placement, RayKind, RaySet, Search, Vec3, time_set};
+
+    let data = raycourse::read_obj(mesh).map_err(|message| Failure::Mesh {
+        path: mesh.to_owned(),
+        message,
+    })?;
+    let placement = Placement {
+        scale: 1.0,
+        rotation: Mat3::IDENTITY,
+        translation: Vec3::ZERO,
+    };
+    let mut mesh = Mesh::new(&data, &placement);
+    let start = Instant::now();
+    mesh.search = Search::Bvh(Bvh::build_sah(&mesh, 8));
+    println!(
+        "build triangles={} ms={:.1}",
+        mesh.triangles.len(),
+        start.elapsed().as_secs_f64() * 1e3
+    );
+    let counts: Vec<usize> = if threads.is_empty() {
+        vec![1, rayon::current_num_threads()]
+    } else {
+        threads.iter().map(|t| t.get()).collect()
+    };
+    for path in sets {
+        let set = RaySet::read(path)?;
+        let name = path.file_stem().unwrap_or_default().to_string_lossy();
+        for &count in &counts {
+            let timing =
+                time_set(&mesh, &set, count, passes).map_err(|source| Failure::Threads {
+                    threads: count,
+                    source,
+                })?;
+            let sums = match set.kind {
+                RayKind::ClosestHit => format!(
+                    "hits={} tsum={:.6}",
+                    timing.checksums.hits, timing.checksums.tsum
+                ),
+                RayKind::Occlusion => format!("occluded={}", timing.checksums.hits),
+            };
+            println!(
+                "raycourse {name} threads={} Mrays/s={:.2} {sums} rays={} range={:.2}-{:.2}",
+                timing.threads,
+                timing.mrays,
+                set.rays.len(),
+                timing.range.0,
+                timing.range.1
+            );
+        }
     }
     Ok(())
 }

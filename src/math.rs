@@ -47,6 +47,18 @@ pub type Quat = glam::Quat;
 pub const PI: Real = std::f32::consts::PI;
 // ANCHOR_END: single
 
+/// `x` rounded to single precision, as files of `f32` values hold it.
+#[cfg(not(feature = "f32"))]
+pub fn to_single(x: Real) -> f32 {
+    x as f32
+}
+
+/// `x` itself: single precision already.
+#[cfg(feature = "f32")]
+pub fn to_single(x: Real) -> f32 {
+    x
+}
+
 /// Linear radiance in red, green and blue, on the course's scale (see [`crate::Film`]).
 pub type Colour = Vec3;
 

@@ -264,6 +264,19 @@ impl Mesh {
     }
     // ANCHOR_END: nearest_triangle
 
+    /// Whether `ray` meets any of `triangles` closer than `t_max`; stops at the
+    /// first it finds.
+    pub fn hits_any(&self, ray: &Ray, triangles: impl Iterator<Item = u32>, t_max: Real) -> bool {
+        let sheared = ShearedRay::new(ray);
+        triangles.into_iter().any(|triangle| {
+            let [a, b, c] = self.corners(triangle);
+            match self.triangle_test {
+                TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, t_max).is_some(),
+                TriangleTest::Watertight => sheared.intersect(a, b, c, t_max).is_some(),
+            }
+        })
+    }
+
     // ANCHOR: mesh_intersect
     /// The nearest triangle that `ray` meets closer than `t_max`.
     pub fn intersect(&self, ray: &Ray, t_max: Real) -> Option<MeshHit> {
@@ -279,6 +292,16 @@ impl Mesh {
         }
     }
     // ANCHOR_END: mesh_intersect
+
+    /// Whether `ray` meets any triangle closer than `t_max`: the shadow-ray test,
+    /// which a BVH answers at the first triangle it finds.
+    pub fn occluded(&self, ray: &Ray, t_max: Real) -> bool {
+        match &self.search {
+            #[cfg(feature = "s6")]
+            Search::Bvh(bvh) => bvh.occluded(self, ray, t_max),
+            _ => self.intersect(ray, t_max).is_some(),
+        }
+    }
 
     /// The hit record of `hit`, for the mesh numbered `object` in the scene. The
     /// point is interpolated from the corners, `alpha A + beta B + gamma C`, whose

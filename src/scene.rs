@@ -110,11 +110,7 @@ impl Scene {
     /// Whether any object lies on `ray` closer than `distance`: the shadow-ray test.
     pub fn occluded(&self, ray: &Ray, distance: Real) -> bool {
         #[cfg(feature = "s5")]
-        if self
-            .meshes
-            .iter()
-            .any(|m| m.intersect(ray, distance).is_some())
-        {
+        if self.meshes.iter().any(|m| m.occluded(ray, distance)) {
             return true;
         }
         self.spheres

@@ -158,3 +158,64 @@ fn no_arguments_renders_the_last_stage_of_the_build() {
     let image = image::open(dir.path().join(format!("out/{last}.png"))).unwrap();
     assert_eq!((image.width(), image.height()), (16, 8));
 }
+
+/// A `.rays` file (RAYFORMAT.md) of `kind` holding `records`.
+#[cfg(feature = "s6")]
+fn ray_file(kind: u32, records: &[[f32; 8]]) -> Vec<u8> {
+    let mut bytes = b"RAYS".to_vec();
+    bytes.extend(1u32.to_le_bytes());
+    bytes.extend(kind.to_le_bytes());
+    bytes.extend((records.len() as u64).to_le_bytes());
+    bytes.extend(records.iter().flatten().flat_map(|v| v.to_le_bytes()));
+    bytes
+}
+
+#[cfg(feature = "s6")]
+#[test]
+fn rays_prints_the_checksums_of_each_set() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("quad.obj"),
+        "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n",
+    )
+    .unwrap();
+    let inf = f32::INFINITY;
+    let closest = [
+        [0.2, 0.3, 2.0, 0.0, 0.0, -1.0, 0.0, inf],
+        [5.0, 0.0, 2.0, 0.0, 0.0, -1.0, 0.0, inf],
+        [0.0, 0.0, -0.5, 0.0, 0.0, 1.0, 0.0, inf],
+    ];
+    let shadow = [
+        [0.0, 0.0, 1.0, 0.0, 0.0, -1.0, 0.0, 2.0],
+        [0.0, 0.0, 1.0, 0.0, 0.0, -1.0, 0.0, 0.5],
+    ];
+    std::fs::write(dir.path().join("closest.rays"), ray_file(0, &closest)).unwrap();
+    std::fs::write(dir.path().join("shadow.rays"), ray_file(1, &shadow)).unwrap();
+    let out = run(
+        &[
+            "rays",
+            "quad.obj",
+            "closest.rays",
+            "shadow.rays",
+            "--passes",
+            "1",
+            "--threads",
+            "1,2",
+        ],
+        dir.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    for threads in [1, 2] {
+        let closest = format!("raycourse closest threads={threads} ");
+        let line = stdout.lines().find(|l| l.starts_with(&closest)).unwrap();
+        assert!(line.contains("hits=2 tsum=2.500000 rays=3"), "{line}");
+        let shadow = format!("raycourse shadow threads={threads} ");
+        let line = stdout.lines().find(|l| l.starts_with(&shadow)).unwrap();
+        assert!(line.contains("occluded=1 rays=2"), "{line}");
+    }
+    std::fs::write(dir.path().join("short.rays"), &ray_file(0, &closest)[..40]).unwrap();
+    let out = run(&["rays", "quad.obj", "short.rays"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(text(&out.stderr).contains("short.rays: 40 bytes"));
+}

@@ -102,6 +102,10 @@ fn searches_agree(obj: &str, count: u64) {
         let bvh = hits(&mesh, &rays);
         let differing = bvh.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "BVH differs from brute force");
+        mesh.search = Search::Bvh(raycourse::Bvh::build_sah(&mesh, 8));
+        let sah = hits(&mesh, &rays);
+        let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
+        assert_eq!(differing, 0, "SAH BVH differs from brute force");
     }
 }
 
