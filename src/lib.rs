@@ -36,6 +36,8 @@ mod aim;
 mod bvh;
 mod camera;
 mod error;
+#[cfg(feature = "s6")]
+mod fast_bvh;
 mod features;
 mod film;
 #[cfg(feature = "s3")]
@@ -93,6 +95,8 @@ pub use aim::*;
 pub use bvh::*;
 pub use camera::*;
 pub use error::*;
+#[cfg(feature = "s6")]
+pub use fast_bvh::*;
 pub use features::*;
 pub use film::*;
 #[cfg(feature = "s3")]

@@ -137,6 +137,13 @@ enum Command {
         /// Thread counts to measure (default: 1 and one per core).
         #[arg(long, value_delimiter = ',')]
         threads: Vec<NonZeroUsize>,
+        /// Which hierarchy: the course's (midpoint splits), the SAH-built one with
+        /// the course's nodes, or the SAH-built one laid out for speed.
+        #[arg(long, value_enum, default_value = "fast")]
+        bvh: BvhKind,
+        /// Most triangles in a leaf of the SAH-built hierarchies.
+        #[arg(long, default_value = "8")]
+        leaf: u16,
     },
     /// Render every stage of this build at the course's settings into a folder, as
     /// `<stage>.png`: the book's figures.
@@ -148,6 +155,18 @@ enum Command {
         #[arg(long, short)]
         quiet: bool,
     },
+}
+
+/// The hierarchies the `rays` command can time.
+#[cfg(feature = "s6")]
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum BvhKind {
+    /// The course's: split in the middle of the longest side.
+    Midpoint,
+    /// Splits by the surface area heuristic, the course's nodes and traversal.
+    Sah,
+    /// Splits by the surface area heuristic, compact nodes, triangles in leaf order.
+    Fast,
 }
 
 /// Settings that replace the scene file's for one render.
@@ -291,7 +310,9 @@ fn run(cli: Cli) -> Result<(), Failure> {
             sets,
             passes,
             threads,
-        }) => rays(&mesh, &sets, passes, &threads),
+            bvh,
+            leaf,
+        }) => rays(&mesh, &sets, passes, &threads, (bvh, leaf)),
         Some(Command::Figures { dir, quiet }) => stages().try_for_each(|stage| {
             let options = RenderArgs {
                 out: Some(dir.join(format!("{}.png", stage.name))),
@@ -515,6 +536,7 @@ fn rays(
     sets: &[PathBuf],
     passes: usize,
     threads: &[NonZeroUsize],
+    (bvh, leaf): (BvhKind, u16),
 ) -> Result<(), Failure> {
     use raycourse::{Bvh, Mat3, Mesh, Placement, RayKind, RaySet, Search, Vec3, time_set};
 
@@ -529,7 +551,11 @@ fn rays(
     };
     let mut mesh = Mesh::new(&data, &placement);
     let start = Instant::now();
-    mesh.search = Search::Bvh(Bvh::build_sah(&mesh, 8));
+    mesh.search = match bvh {
+        BvhKind::Midpoint => Search::Bvh(Bvh::build(&mesh)),
+        BvhKind::Sah => Search::Bvh(Bvh::build_sah(&mesh, leaf.into())),
+        BvhKind::Fast => Search::FastBvh(raycourse::FastBvh::build(&mesh, leaf)),
+    };
     println!(
         "build triangles={} ms={:.1}",
         mesh.triangles.len(),

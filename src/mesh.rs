@@ -22,6 +22,9 @@ pub enum Search {
     /// Only the triangles of the boxes of a bounding volume hierarchy that the ray meets.
     #[cfg(feature = "s6")]
     Bvh(crate::bvh::Bvh),
+    /// A hierarchy built with the surface area heuristic and laid out for speed.
+    #[cfg(feature = "s6")]
+    FastBvh(crate::fast_bvh::FastBvh),
 }
 
 /// Which normal shades a mesh.
@@ -289,6 +292,8 @@ impl Mesh {
             }
             #[cfg(feature = "s6")]
             Search::Bvh(bvh) => bvh.intersect(self, ray, t_max),
+            #[cfg(feature = "s6")]
+            Search::FastBvh(bvh) => bvh.intersect(self, ray, t_max),
         }
     }
     // ANCHOR_END: mesh_intersect
@@ -299,6 +304,8 @@ impl Mesh {
         match &self.search {
             #[cfg(feature = "s6")]
             Search::Bvh(bvh) => bvh.occluded(self, ray, t_max),
+            #[cfg(feature = "s6")]
+            Search::FastBvh(bvh) => bvh.occluded(self, ray, t_max),
             _ => self.intersect(ray, t_max).is_some(),
         }
     }

@@ -77,6 +77,8 @@ fn search(acceleration: AccelerationSpec, mesh: &Mesh) -> Search {
         AccelerationSpec::Bbox => Search::BoundingBox,
         #[cfg(feature = "s6")]
         AccelerationSpec::Bvh => Search::Bvh(crate::bvh::Bvh::build(mesh)),
+        #[cfg(feature = "s6")]
+        AccelerationSpec::Fast => Search::FastBvh(crate::fast_bvh::FastBvh::build(mesh, 8)),
         _ => Search::BruteForce,
     }
 }

@@ -78,7 +78,7 @@ pub enum FilterSpec {
     Bilinear,
 }
 
-/// `acceleration = "none"`, `"bbox"` or `"bvh"`: how meshes are searched.
+/// `acceleration = "none"`, `"bbox"`, `"bvh"` or `"fast"`: how meshes are searched.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum AccelerationSpec {
@@ -89,6 +89,9 @@ pub enum AccelerationSpec {
     Bbox,
     /// A bounding volume hierarchy (session 6).
     Bvh,
+    /// A hierarchy built with the surface area heuristic and laid out for speed
+    /// (after session 6; leaves of at most 8 triangles).
+    Fast,
 }
 
 /// `triangle_test = "moller-trumbore"` or `"watertight"`: how a ray meets a triangle.
@@ -363,7 +366,10 @@ impl SceneFile {
         if self.render.triangle_test.is_some() {
             needs("render.triangle_test", 5, "triangle meshes")?;
         }
-        if self.render.acceleration == AccelerationSpec::Bvh {
+        if matches!(
+            self.render.acceleration,
+            AccelerationSpec::Bvh | AccelerationSpec::Fast
+        ) {
             needs("render.acceleration", 6, "a bounding volume hierarchy")?;
         }
         let camera = &self.camera;

@@ -106,6 +106,24 @@ fn searches_agree(obj: &str, count: u64) {
         let sah = hits(&mesh, &rays);
         let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "SAH BVH differs from brute force");
+        for leaf in [1, 4, 8, 16] {
+            mesh.search = Search::FastBvh(raycourse::FastBvh::build(&mesh, leaf));
+            let fast = hits(&mesh, &rays);
+            let differing = fast.iter().zip(&brute).filter(|(a, b)| a != b).count();
+            assert_eq!(
+                differing, 0,
+                "fast BVH (leaves of {leaf}) differs from brute force"
+            );
+            let blocked = rays
+                .iter()
+                .zip(&brute)
+                .filter(|(ray, hit)| mesh.occluded(ray, Real::INFINITY) != hit.is_some())
+                .count();
+            assert_eq!(
+                blocked, 0,
+                "fast BVH's any-hit test differs from the closest hit"
+            );
+        }
     }
 }
 
@@ -251,7 +269,25 @@ fn mesh_stages_render_the_same_bytes_whatever_the_search() {
     let brute = png(5, "mesh");
     assert_eq!(png(5, "mesh-bbox"), brute, "bounding box");
     #[cfg(feature = "s6")]
-    assert_eq!(png(6, "bvh"), brute, "BVH");
+    {
+        assert_eq!(png(6, "bvh"), brute, "BVH");
+        // The fast hierarchy, with the BVH stage's watertight triangles.
+        let stage = find_stage(6, "bvh").unwrap();
+        let text = stage
+            .source
+            .replace("acceleration = \"bvh\"", "acceleration = \"fast\"");
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(stage.path);
+        let fast = parse_scene(&text, &path, &overrides).unwrap();
+        assert!(matches!(fast.meshes[0].search, Search::FastBvh(_)));
+        let bvh = stage.scene(&overrides).unwrap();
+        let image = |scene: &raycourse::Scene| {
+            encode_png(
+                &render(scene, &ProgressBar::hidden()).film,
+                scene.settings.gamma,
+            )
+        };
+        assert_eq!(image(&fast), image(&bvh), "fast BVH");
+    }
 }
 
 #[cfg(feature = "s7")]
