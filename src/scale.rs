@@ -63,7 +63,7 @@ mod tests {
 
     #[test]
     fn every_length_scales_and_every_point_moves() {
-        let room = find_stage(2, "shadows")
+        let room = find_stage(1, "spheres")
             .unwrap()
             .scene(&Overrides::default())
             .unwrap();
