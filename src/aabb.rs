@@ -35,6 +35,14 @@ impl Aabb {
         }
     }
 
+    /// Half the surface area of the box, `dx dy + dy dz + dz dx`: the chance that a
+    /// random ray meeting a parent box also meets this one is the ratio of their
+    /// areas (the factor 2 cancels). Zero for the empty box.
+    pub fn half_area(&self) -> Real {
+        let d = (self.max - self.min).max(Vec3::ZERO);
+        d.x * d.y + d.y * d.z + d.z * d.x
+    }
+
     /// The centre of the box.
     pub fn centre(&self) -> Vec3 {
         (self.min + self.max) * 0.5

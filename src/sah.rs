@@ -13,14 +13,6 @@ const BINS: usize = 16;
 /// Cost of visiting one node, relative to testing one triangle.
 const TRAVERSAL_COST: Real = 1.0;
 
-/// Half the surface area of a box: the probability that a random ray meeting a
-/// parent box also meets this one is the ratio of their areas (the constant
-/// factor cancels).
-fn half_area(b: &Aabb) -> Real {
-    let d = (b.max - b.min).max(Vec3::ZERO);
-    d.x * d.y + d.y * d.z + d.z * d.x
-}
-
 /// One bin: the box of the triangles whose centroid falls in it, and how many.
 #[derive(Clone, Copy)]
 struct Bin {
@@ -74,7 +66,7 @@ impl Bvh {
             let leaf_cost = count as Real;
             let left = match best_split(items, &boxes, &centroids, &centre_bounds) {
                 Some(split)
-                    if TRAVERSAL_COST + split.cost / half_area(&bounds) < leaf_cost
+                    if TRAVERSAL_COST + split.cost / bounds.half_area() < leaf_cost
                         || count as usize > max_leaf =>
                 {
                     let low = centre_bounds.min[split.axis];
@@ -156,12 +148,12 @@ fn best_split(
         for k in (1..BINS).rev() {
             right = merge(right, bins[k]);
             if right.count > 0 {
-                right_cost[k] = half_area(&right.bounds) * right.count as Real;
+                right_cost[k] = right.bounds.half_area() * right.count as Real;
             }
         }
         let mut left = bins[0];
         for k in 1..BINS {
-            let cost = half_area(&left.bounds) * left.count as Real + right_cost[k];
+            let cost = left.bounds.half_area() * left.count as Real + right_cost[k];
             if left.count > 0 && best.as_ref().is_none_or(|b| cost < b.cost) {
                 best = Some(Split { axis, bin: k, cost });
             }
