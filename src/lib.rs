@@ -35,6 +35,7 @@ mod aim;
 #[cfg(feature = "s6")]
 mod bvh;
 mod camera;
+mod convergence;
 mod error;
 #[cfg(feature = "s6")]
 mod fast_bvh;
@@ -58,11 +59,13 @@ mod mesh;
 mod mesh_file;
 #[cfg(feature = "s2")]
 mod optics;
+mod plot;
 mod png;
 mod radiance;
 mod ray;
 #[cfg(feature = "s6")]
 mod rayset;
+mod reference;
 mod render;
 mod rng;
 #[cfg(feature = "s6")]
@@ -84,6 +87,7 @@ mod texture;
 #[cfg(feature = "s5")]
 mod triangle;
 mod values;
+mod variant;
 #[cfg(feature = "s5")]
 mod watertight;
 
@@ -94,6 +98,7 @@ pub use aim::*;
 #[cfg(feature = "s6")]
 pub use bvh::*;
 pub use camera::*;
+pub use convergence::*;
 pub use error::*;
 #[cfg(feature = "s6")]
 pub use fast_bvh::*;
@@ -115,11 +120,13 @@ pub use mesh::*;
 pub use mesh_file::*;
 #[cfg(feature = "s2")]
 pub use optics::*;
+pub use plot::*;
 pub use png::*;
 pub use radiance::*;
 pub use ray::*;
 #[cfg(feature = "s6")]
 pub use rayset::*;
+pub use reference::*;
 pub use render::*;
 pub use rng::*;
 #[cfg(feature = "s3")]
@@ -136,5 +143,6 @@ pub use texture::*;
 #[cfg(feature = "s5")]
 pub use triangle::*;
 pub use values::*;
+pub use variant::*;
 #[cfg(feature = "s5")]
 pub use watertight::*;

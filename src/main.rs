@@ -145,6 +145,66 @@ enum Command {
         #[arg(long, default_value = "8")]
         leaf: u16,
     },
+    /// Measure how fast a stage's error falls: render a reference (cached), then the
+    /// sample counts 1, 2, 4, ... up to `--max-spp`, timing each and measuring its
+    /// error; write `<out>.csv` and a log-log plot `<out>.png`, print the fitted
+    /// slopes and each variant's efficiency 1 / (RMSE^2 x seconds).
+    Converge {
+        /// A stage's name (see `list`) or a scene file.
+        scene: String,
+        /// Largest sample count of the ladder.
+        #[arg(long, default_value = "256")]
+        max_spp: NonZeroU32,
+        /// Samples per pixel of the reference image.
+        #[arg(long, default_value = "4096")]
+        reference_spp: NonZeroU32,
+        /// A built-in comparison of variants.
+        #[arg(long, value_parser = PossibleValuesParser::new(raycourse::COMPARISONS))]
+        compare: Option<String>,
+        /// A variant to compare, `label:key=value,...` with scene-file keys such as
+        /// `render.bounces=2` (repeat for more).
+        #[arg(long)]
+        variant: Vec<String>,
+        /// Edits of the reference, `key=value,...` (default: the scene as it is, or
+        /// the comparison's own).
+        #[arg(long)]
+        reference: Option<String>,
+        /// Label of the rows when there are no variants (default: the scene's name).
+        #[arg(long)]
+        label: Option<String>,
+        /// Folder of cached reference images.
+        #[arg(long, default_value = "out/reference")]
+        cache: PathBuf,
+        /// Output files without extension (default: out/converge/<scene>).
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// Image width in pixels.
+        #[arg(long)]
+        width: Option<NonZeroU32>,
+        /// Image height in pixels.
+        #[arg(long)]
+        height: Option<NonZeroU32>,
+        /// Worker threads (default: one per core).
+        #[arg(long)]
+        threads: Option<NonZeroUsize>,
+        /// Hide the progress bar.
+        #[arg(long, short)]
+        quiet: bool,
+    },
+    /// Plot the rows of one or more CSV files written by `converge` on one log-log
+    /// plot (for instance the same study from the double- and single-precision
+    /// builds).
+    Plot {
+        /// The CSV files.
+        #[arg(required = true)]
+        csv: Vec<PathBuf>,
+        /// The PNG to write.
+        #[arg(long)]
+        out: PathBuf,
+        /// The plot's title.
+        #[arg(long, default_value = "")]
+        title: String,
+    },
     /// Render every stage of this build at the course's settings into a folder, as
     /// `<stage>.png`: the book's figures.
     Figures {
@@ -232,6 +292,12 @@ enum Failure {
     #[cfg(feature = "s6")]
     #[error(transparent)]
     RaySet(#[from] raycourse::RaySetError),
+    #[error(transparent)]
+    Variant(#[from] raycourse::VariantError),
+    #[error("{}: {message}", path.display())]
+    Csv { path: PathBuf, message: String },
+    #[error("{0}")]
+    Usage(String),
     #[error("{}: cannot write the image: {source}", path.display())]
     Write {
         path: PathBuf,
@@ -243,7 +309,9 @@ impl Failure {
     /// 2 for bad input (as clap's usage errors), 1 for a failure of the machine.
     fn exit_code(&self) -> ExitCode {
         match self {
-            Self::Scene(_) => ExitCode::from(2),
+            Self::Scene(_) | Self::Variant(_) | Self::Csv { .. } | Self::Usage(_) => {
+                ExitCode::from(2)
+            }
             #[cfg(feature = "s6")]
             Self::Mesh { .. } | Self::RaySet(_) => ExitCode::from(2),
             #[cfg(feature = "s7")]
@@ -313,6 +381,37 @@ fn run(cli: Cli) -> Result<(), Failure> {
             bvh,
             leaf,
         }) => rays(&mesh, &sets, passes, &threads, (bvh, leaf)),
+        Some(Command::Converge {
+            scene,
+            max_spp,
+            reference_spp,
+            compare,
+            variant,
+            reference,
+            label,
+            cache,
+            out,
+            width,
+            height,
+            threads,
+            quiet,
+        }) => {
+            let study = Study {
+                ladder: raycourse::sample_ladder(max_spp.get()),
+                reference_spp,
+                cache,
+                overrides: Overrides {
+                    width,
+                    height,
+                    ..Overrides::default()
+                },
+                threads,
+                quiet,
+            };
+            let out = out.unwrap_or_else(|| Path::new("out/converge").join(&scene));
+            converge(&scene, (compare, variant, reference, label), &study, &out)
+        }
+        Some(Command::Plot { csv, out, title }) => plot(&csv, &out, &title),
         Some(Command::Figures { dir, quiet }) => stages().try_for_each(|stage| {
             let options = RenderArgs {
                 out: Some(dir.join(format!("{}.png", stage.name))),
@@ -372,8 +471,9 @@ fn timed_render(label: &str, scene: &Scene, options: &RenderArgs) -> Result<Time
     let progress = if options.quiet {
         ProgressBar::hidden()
     } else {
-        ProgressBar::new(u64::from(scene.camera.height)).with_style(
-            ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} rows, {eta} left")
+        let samples = u64::from(scene.settings.samples);
+        ProgressBar::new(u64::from(scene.camera.height) * samples).with_style(
+            ProgressStyle::with_template("{msg} [{bar:40}] {percent}%, {eta} left")
                 .expect("the template is valid")
                 .progress_chars("=> "),
         )
@@ -592,5 +692,199 @@ fn rays(
             );
         }
     }
+    Ok(())
+}
+
+/// How a convergence study is run.
+struct Study {
+    /// The sample counts rendered.
+    ladder: Vec<u32>,
+    /// Samples per pixel of the reference.
+    reference_spp: NonZeroU32,
+    /// Where references are cached.
+    cache: PathBuf,
+    /// Image size, when not the scene's.
+    overrides: Overrides,
+    threads: Option<NonZeroUsize>,
+    quiet: bool,
+}
+
+/// The scene file text of `name` (a stage or a file) and its path.
+fn scene_source(name: &str) -> Result<(String, PathBuf), Failure> {
+    if let Some(stage) = stages().find(|s| s.name == name) {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(stage.path);
+        return Ok((stage.source.to_owned(), path));
+    }
+    let path = PathBuf::from(name);
+    if path.extension().is_none_or(|e| e != "toml") {
+        return Err(Failure::Usage(format!(
+            "`{name}` is neither a stage of this build (see `raycourse list`) nor a .toml scene file"
+        )));
+    }
+    let source = std::fs::read_to_string(&path).map_err(|source| SceneError::Read {
+        path: path.clone(),
+        source,
+    })?;
+    Ok((source, path))
+}
+
+/// Runs a convergence study of the scene `name`: the variants of `compare` and
+/// `variants` (or the scene itself, labelled `label`) against a reference.
+fn converge(
+    name: &str,
+    (compare, variants, reference, label): (
+        Option<String>,
+        Vec<String>,
+        Option<String>,
+        Option<String>,
+    ),
+    study: &Study,
+    out: &Path,
+) -> Result<(), Failure> {
+    use raycourse::{Edit, Variant, climb, comparison, fitted_slope, parse_scene};
+
+    let (source, path) = scene_source(name)?;
+    let (mut chosen, mut reference_edits): (Vec<Variant>, Vec<Edit>) =
+        compare.as_deref().and_then(comparison).unwrap_or_default();
+    for text in &variants {
+        chosen.push(Variant::parse(text)?);
+    }
+    if let Some(text) = reference {
+        reference_edits = Variant::parse(&format!("reference:{text}"))?.edits;
+    }
+    if chosen.is_empty() {
+        let label = label.unwrap_or_else(|| name.to_owned());
+        chosen.push(Variant {
+            label,
+            edits: vec![],
+        });
+    }
+    let threads = study.threads.map_or(0, NonZeroUsize::get);
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|source| Failure::Threads { threads, source })?;
+    let scene_of = |edits: Vec<Edit>, samples: NonZeroU32, seed: Option<u64>| {
+        let text = Variant {
+            label: String::new(),
+            edits,
+        }
+        .apply(&source)?;
+        let overrides = Overrides {
+            samples: Some(samples),
+            seed,
+            ..study.overrides
+        };
+        Ok::<_, Failure>((parse_scene(&text, &path, &overrides)?, text))
+    };
+    // The reference uses other random numbers than the ladder, so that its own
+    // remaining noise is independent of the renders it measures.
+    let (truth, text) = scene_of(reference_edits, study.reference_spp, Some(REFERENCE_SEED))?;
+    let rows = u64::from(truth.camera.height);
+    let work = study.ladder.iter().map(|&n| u64::from(n)).sum::<u64>() * chosen.len() as u64;
+    let progress = if study.quiet {
+        ProgressBar::hidden()
+    } else {
+        ProgressBar::new(rows * (work + u64::from(study.reference_spp.get()))).with_style(
+            ProgressStyle::with_template("{msg} [{bar:40}] {percent}%, {eta} left")
+                .expect("the template is valid")
+                .progress_chars("=> "),
+        )
+    };
+    let key = format!("{text}\n{:?}", truth.camera);
+    let cached = raycourse::reference_path(&study.cache, &key);
+    let reference = match raycourse::load_reference(&cached) {
+        Some(film) => {
+            progress.inc(rows * u64::from(study.reference_spp.get()));
+            film
+        }
+        None => {
+            progress.set_message(format!("reference, {} spp", study.reference_spp));
+            let film = pool.install(|| render(&truth, &progress)).film;
+            raycourse::save_reference(&cached, &film).map_err(|source| Failure::Write {
+                path: cached.clone(),
+                source,
+            })?;
+            film
+        }
+    };
+    let mut rungs = vec![];
+    for variant in &chosen {
+        let (scene, _) = scene_of(variant.edits.clone(), NonZeroU32::MIN, None)?;
+        progress.set_message(variant.label.clone());
+        rungs.extend(
+            pool.install(|| climb(&variant.label, &scene, &study.ladder, &reference, &progress)),
+        );
+    }
+    progress.finish_and_clear();
+    let mut csv = format!("{}\n", raycourse::Rung::CSV_HEADER);
+    for rung in &rungs {
+        csv += &rung.csv();
+        csv.push('\n');
+    }
+    let csv_path = out.with_extension("csv");
+    write(&csv_path, csv.as_bytes())?;
+    println!(
+        "{name}: {}, reference {} spp, {} threads -> {}",
+        truth.summary().split(", ").take(1).collect::<String>(),
+        study.reference_spp,
+        pool.current_num_threads(),
+        csv_path.display()
+    );
+    for variant in &chosen {
+        let mine: Vec<&raycourse::Rung> = rungs
+            .iter()
+            .filter(|r| r.variant == variant.label)
+            .collect();
+        let last = mine.last().expect("the ladder has at least one rung");
+        let slope = |x: &dyn Fn(&raycourse::Rung) -> raycourse::Real| {
+            let points: Vec<_> = mine.iter().map(|r| (x(r), r.error.rmse)).collect();
+            fitted_slope(&points).map_or("-".into(), |s| format!("{s:.3}"))
+        };
+        println!(
+            "  {}: RMSE {:.4e} at {} spp in {:.3} s; slope {} against samples, {} against time; efficiency {:.4e}",
+            variant.label,
+            last.error.rmse,
+            last.samples,
+            last.seconds,
+            slope(&|r| r.samples as raycourse::Real),
+            slope(&|r| r.seconds),
+            last.efficiency()
+        );
+    }
+    let title = format!("{name}: error against samples and time");
+    match raycourse::plot_rungs(&title, &rungs) {
+        Some(png) => {
+            let png_path = out.with_extension("png");
+            write(&png_path, &png)?;
+            println!("  plot -> {}", png_path.display());
+        }
+        None => println!("  every image equals the reference: nothing to plot"),
+    }
+    Ok(())
+}
+
+/// Seed of every reference render (the ladder keeps the scene's seed).
+const REFERENCE_SEED: u64 = 0x5eed_0f_7247;
+
+/// Plots the rows of the CSV files `csv` into `out`.
+fn plot(csv: &[PathBuf], out: &Path, title: &str) -> Result<(), Failure> {
+    let mut rungs = vec![];
+    for path in csv {
+        let text = std::fs::read_to_string(path).map_err(|e| Failure::Csv {
+            path: path.clone(),
+            message: format!("cannot read: {e}"),
+        })?;
+        rungs.extend(
+            raycourse::read_rungs(&text).map_err(|message| Failure::Csv {
+                path: path.clone(),
+                message,
+            })?,
+        );
+    }
+    let png = raycourse::plot_rungs(title, &rungs)
+        .ok_or_else(|| Failure::Usage("no row has an error above 0: nothing to plot".into()))?;
+    write(out, &png)?;
+    println!("{} rows -> {}", rungs.len(), out.display());
     Ok(())
 }

@@ -59,6 +59,18 @@ pub fn to_single(x: Real) -> f32 {
     x
 }
 
+/// `x` in double precision, as reference images are stored.
+#[cfg(not(feature = "f32"))]
+pub fn to_double(x: Real) -> f64 {
+    x
+}
+
+/// `x` widened to double precision, exactly.
+#[cfg(feature = "f32")]
+pub fn to_double(x: Real) -> f64 {
+    f64::from(x)
+}
+
 /// Linear radiance in red, green and blue, on the course's scale (see [`crate::Film`]).
 pub type Colour = Vec3;
 

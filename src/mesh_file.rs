@@ -10,10 +10,12 @@ use crate::scene_file::{AccelerationSpec, MeshSpec, TriangleTestSpec, require};
 use crate::triangle::TriangleTest;
 
 /// The meshes of `specs`, files resolved next to the scene file at `scene`, each
-/// searched as `acceleration` says with the ray-triangle test `triangle_test`.
+/// searched as `acceleration` says (with leaves of at most `leaf_size` triangles
+/// for the fast hierarchy) with the ray-triangle test `triangle_test`.
 pub fn build_meshes(
     specs: &[MeshSpec],
     acceleration: AccelerationSpec,
+    leaf_size: u16,
     triangle_test: TriangleTestSpec,
     scene: &Path,
 ) -> Result<Vec<Mesh>, SceneError> {
@@ -59,7 +61,7 @@ pub fn build_meshes(
             TriangleTestSpec::MollerTrumbore => TriangleTest::MollerTrumbore,
             TriangleTestSpec::Watertight => TriangleTest::Watertight,
         };
-        mesh.search = search(acceleration, &mesh);
+        mesh.search = search(acceleration, leaf_size, &mesh);
         meshes.push(mesh);
     }
     Ok(meshes)
@@ -71,14 +73,14 @@ pub fn build_meshes(
     not(feature = "s6"),
     expect(unused_variables, reason = "no BVH before session 6")
 )]
-fn search(acceleration: AccelerationSpec, mesh: &Mesh) -> Search {
+fn search(acceleration: AccelerationSpec, leaf_size: u16, mesh: &Mesh) -> Search {
     #[allow(unreachable_patterns, reason = "every arm exists from session 6 on")]
     match acceleration {
         AccelerationSpec::Bbox => Search::BoundingBox,
         #[cfg(feature = "s6")]
         AccelerationSpec::Bvh => Search::Bvh(crate::bvh::Bvh::build(mesh)),
         #[cfg(feature = "s6")]
-        AccelerationSpec::Fast => Search::FastBvh(crate::fast_bvh::FastBvh::build(mesh, 8)),
+        AccelerationSpec::Fast => Search::FastBvh(crate::fast_bvh::FastBvh::build(mesh, leaf_size)),
         _ => Search::BruteForce,
     }
 }

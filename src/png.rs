@@ -12,14 +12,15 @@ use crate::math::Real;
 /// The film as PNG bytes. The encoder settings are fixed so the same film always
 /// gives the same bytes: the snapshot tests compare them byte for byte.
 pub fn encode_png(film: &Film, gamma: Real) -> Vec<u8> {
+    encode_rgb8(&film.to_rgb8(gamma), film.width, film.height)
+}
+
+/// `width` x `height` 8-bit RGB pixels, row-major, as PNG bytes, with the same fixed
+/// settings as [`encode_png`].
+pub fn encode_rgb8(rgb: &[u8], width: u32, height: u32) -> Vec<u8> {
     let mut bytes = Vec::new();
     PngEncoder::new_with_quality(&mut bytes, CompressionType::Default, FilterType::Adaptive)
-        .write_image(
-            &film.to_rgb8(gamma),
-            film.width,
-            film.height,
-            image::ExtendedColorType::Rgb8,
-        )
+        .write_image(rgb, width, height, image::ExtendedColorType::Rgb8)
         .expect("encoding a well-sized RGB buffer into memory cannot fail");
     bytes
 }

@@ -80,7 +80,8 @@ pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> SampleMean {
 
 // ANCHOR: render
 /// Renders `scene` on the current rayon thread pool, one row per task, ticking
-/// `progress` once per row. Each pixel depends only on the scene and its position,
+/// `progress` by the number of samples per pixel at each finished row (so a bar of
+/// `height x samples` fills once). Each pixel depends only on the scene and its position,
 /// so the image is the same whatever the number of threads.
 pub fn render(scene: &Scene, progress: &ProgressBar) -> Render {
     let camera = scene.camera;
@@ -97,7 +98,7 @@ pub fn render(scene: &Scene, progress: &ProgressBar) -> Render {
                 *value = mean.mean();
                 dropped += u64::from(mean.dropped);
             }
-            progress.inc(1);
+            progress.inc(u64::from(scene.settings.samples));
             (tracer.rays, dropped)
         })
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));

@@ -90,7 +90,7 @@ pub enum AccelerationSpec {
     /// A bounding volume hierarchy (session 6).
     Bvh,
     /// A hierarchy built with the surface area heuristic and laid out for speed
-    /// (after session 6; leaves of at most 8 triangles).
+    /// (after session 6; leaves of at most `leaf_size` triangles).
     Fast,
 }
 
@@ -141,6 +141,8 @@ pub struct RenderSpec {
     pub acceleration: AccelerationSpec,
     /// Which ray-triangle test meshes use (session 5; default watertight).
     pub triangle_test: Option<TriangleTestSpec>,
+    /// Most triangles in a leaf of the `"fast"` hierarchy (default 8).
+    pub leaf_size: Option<std::num::NonZeroU16>,
 }
 
 fn one() -> NonZeroU32 {
@@ -372,6 +374,13 @@ impl SceneFile {
         ) {
             needs("render.acceleration", 6, "a bounding volume hierarchy")?;
         }
+        if self.render.leaf_size.is_some() && self.render.acceleration != AccelerationSpec::Fast {
+            return Err(SceneError::Inconsistent {
+                path: path.to_owned(),
+                key: "render.leaf_size".into(),
+                message: "only the \"fast\" acceleration has a leaf size".into(),
+            });
+        }
         let camera = &self.camera;
         if camera.look_at.is_some() || camera.up.is_some() || camera.plunge.is_some() {
             needs("camera.look_at", 7, "an aimed camera")?;
@@ -511,6 +520,7 @@ impl SceneFile {
             meshes: crate::mesh_file::build_meshes(
                 &self.meshes,
                 r.acceleration,
+                r.leaf_size.map_or(8, |l| l.get()),
                 r.triangle_test.unwrap_or_default(),
                 path,
             )?,
