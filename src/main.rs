@@ -791,7 +791,12 @@ fn converge(
                 .progress_chars("=> "),
         )
     };
-    let key = format!("{text}\n{:?}", truth.camera);
+    // The key holds nothing that prints differently in single precision, so both
+    // builds share a reference (stored in double precision).
+    let key = format!(
+        "{text}\n{}x{}, {} spp, seed {}",
+        truth.camera.width, truth.camera.height, truth.settings.samples, truth.settings.seed
+    );
     let cached = raycourse::reference_path(&study.cache, &key);
     let reference = match raycourse::load_reference(&cached) {
         Some(film) => {
@@ -865,7 +870,7 @@ fn converge(
 }
 
 /// Seed of every reference render (the ladder keeps the scene's seed).
-const REFERENCE_SEED: u64 = 0x5eed_0f_7247;
+const REFERENCE_SEED: u64 = 0x5eed_f00d;
 
 /// Plots the rows of the CSV files `csv` into `out`.
 fn plot(csv: &[PathBuf], out: &Path, title: &str) -> Result<(), Failure> {

@@ -5,7 +5,9 @@ use std::path::Path;
 use std::process::Output;
 
 use assert_cmd::cargo::cargo_bin_cmd;
-use raycourse::{Real, Rung, fitted_slope, read_rungs};
+use raycourse::{Rung, read_rungs};
+#[cfg(feature = "s3")]
+use raycourse::{Real, fitted_slope};
 
 fn run(args: &[&str], dir: &Path) -> Output {
     cargo_bin_cmd!("raycourse")
@@ -16,6 +18,7 @@ fn run(args: &[&str], dir: &Path) -> Output {
 }
 
 /// Runs a study in `dir` and returns its rows.
+#[cfg(feature = "s3")]
 fn study(dir: &Path, args: &[&str]) -> Vec<Rung> {
     let mut all = vec!["converge", "-q", "--out", "study"];
     all.extend(args);
@@ -28,6 +31,7 @@ fn study(dir: &Path, args: &[&str]) -> Vec<Rung> {
     read_rungs(&std::fs::read_to_string(dir.join("study.csv")).unwrap()).unwrap()
 }
 
+#[cfg(feature = "s4")]
 fn rows<'r>(rungs: &'r [Rung], variant: &str) -> Vec<&'r Rung> {
     rungs.iter().filter(|r| r.variant == variant).collect()
 }
