@@ -6,6 +6,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=book/src/figures/speed
+exec > >(tee "$out/summary.txt")
 small=(--width 64 --height 64 --quiet)
 converge() { cargo run --release --quiet -- converge "$@" "${small[@]}"; }
 
@@ -24,3 +25,4 @@ cargo run --release --quiet --features f32 -- converge indirect --label single \
   --max-spp 256 --reference-spp 8192 "${small[@]}" --out "$out/single"
 cargo run --release --quiet -- plot "$out/double.csv" "$out/single.csv" \
   --out "$out/precision.png" --title "indirect: double against single precision"
+rm -f "$out/double.png" "$out/single.png"
