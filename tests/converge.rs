@@ -5,9 +5,9 @@ use std::path::Path;
 use std::process::Output;
 
 use assert_cmd::cargo::cargo_bin_cmd;
-use raycourse::{Rung, read_rungs};
 #[cfg(feature = "s3")]
 use raycourse::{Real, fitted_slope};
+use raycourse::{Rung, read_rungs};
 
 fn run(args: &[&str], dir: &Path) -> Output {
     cargo_bin_cmd!("raycourse")
