@@ -156,10 +156,10 @@ pub fn read_rungs(text: &str) -> Result<Vec<Rung>, String> {
 }
 
 /// Renders `scene` at each sample count of `ladder` on the current thread pool and
-/// measures each image against `reference`, ticking `progress` once per row.
+/// measures each image against `reference`, ticking `progress` as [`render`] does.
 pub fn climb(
     variant: &str,
-    scene: &Scene,
+    mut scene: Scene,
     ladder: &[u32],
     reference: &Film,
     progress: &ProgressBar,
@@ -167,7 +167,6 @@ pub fn climb(
     ladder
         .iter()
         .map(|&samples| {
-            let mut scene = scene.clone();
             scene.settings.samples = samples;
             let start = Instant::now();
             let image = render(&scene, progress);

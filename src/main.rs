@@ -818,7 +818,7 @@ fn converge(
         let (scene, _) = scene_of(variant.edits.clone(), NonZeroU32::MIN, None)?;
         progress.set_message(variant.label.clone());
         rungs.extend(
-            pool.install(|| climb(&variant.label, &scene, &study.ladder, &reference, &progress)),
+            pool.install(|| climb(&variant.label, scene, &study.ladder, &reference, &progress)),
         );
     }
     progress.finish_and_clear();
@@ -830,8 +830,9 @@ fn converge(
     let csv_path = out.with_extension("csv");
     write(&csv_path, csv.as_bytes())?;
     println!(
-        "{name}: {}, reference {} spp, {} threads -> {}",
-        truth.summary().split(", ").take(1).collect::<String>(),
+        "{name}: {}x{}, reference {} spp, {} threads -> {}",
+        truth.camera.width,
+        truth.camera.height,
         study.reference_spp,
         pool.current_num_threads(),
         csv_path.display()
