@@ -1,8 +1,9 @@
 //! The hierarchy laid out for speed: the SAH tree collapsed to four children per
 //! node, whose four boxes a ray tests at once on the four lanes of a SIMD register,
-//! with each leaf's triangles copied next to each other. It finds exactly the hits
-//! the course's traversal finds; only the number of steps and the memory traffic
-//! shrink.
+//! and each leaf's triangles stored in groups of four that a single-precision
+//! pre-test ([`TriangleGroup`]) also tests at once, leaving the exact test only the
+//! triangles the ray may meet. It finds exactly the hits the course's traversal
+//! finds; only the number of steps and the memory traffic shrink.
 
 use glam::Vec4;
 
@@ -11,6 +12,7 @@ use crate::math::{Real, Vec3, to_single};
 use crate::mesh::{Mesh, MeshHit};
 use crate::ray::Ray;
 use crate::triangle::{TriangleHit, TriangleTest, intersect_triangle};
+use crate::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
 use crate::watertight::ShearedRay;
 
 /// Children per node: one per lane of a 128-bit SIMD register.
@@ -26,9 +28,12 @@ const STACK: usize = 24;
 pub struct WideNode {
     /// The children's boxes by plane: lowest x, y, z, then highest x, y, z; lane `i`
     /// is child `i`. Single precision, rounded outwards so that each box still holds
-    /// everything below it. An empty slot's box is inverted, and no ray enters it.
+    /// everything below it. An empty slot's box is the point at infinity on all
+    /// three axes, which no ray reaches: along each axis its two planes are crossed
+    /// at the same infinite distance, beyond any exit if the ray goes that way, before
+    /// any entry if it goes the other.
     planes: [[f32; WIDTH]; 6],
-    /// For an inner child, its node's index; for a leaf, its first triangle slot.
+    /// For an inner child, its node's index; for a leaf, its first triangle group.
     child: [u32; WIDTH],
     /// How many triangles a leaf child holds; 0 for an inner child.
     count: [u32; WIDTH],
@@ -37,14 +42,7 @@ pub struct WideNode {
 impl WideNode {
     /// A node with four empty slots.
     const EMPTY: WideNode = WideNode {
-        planes: [
-            [f32::INFINITY; WIDTH],
-            [f32::INFINITY; WIDTH],
-            [f32::INFINITY; WIDTH],
-            [f32::NEG_INFINITY; WIDTH],
-            [f32::NEG_INFINITY; WIDTH],
-            [f32::NEG_INFINITY; WIDTH],
-        ],
+        planes: [[f32::INFINITY; WIDTH]; 6],
         child: [0; WIDTH],
         count: [0; WIDTH],
     };
@@ -55,9 +53,11 @@ impl WideNode {
 pub struct FastBvh {
     /// The nodes, the root first.
     nodes: Vec<WideNode>,
-    /// The corners of every triangle, in leaf order.
-    corners: Vec<[Vec3; 3]>,
-    /// The mesh's index of every triangle slot.
+    /// Each leaf's triangles in groups of four, in single precision, for the
+    /// pre-test; group `g` holds slots `4 g` to `4 g + 3`.
+    groups: Vec<TriangleGroup>,
+    /// The mesh's index of the triangle in every slot, for the exact test on the
+    /// mesh's own corners. A leaf's last group is padded with its last triangle.
     ids: Vec<u32>,
 }
 
@@ -77,62 +77,52 @@ fn round_up(x: Real) -> f32 {
 }
 
 /// A ray in single precision, for the box tests, each value splatted over four
-/// lanes. Its origin is kept twice, rounded down and rounded up, both strictly
+/// lanes. Its origin is kept twice, rounded up and rounded down, both strictly
 /// beyond the true origin: a lowest plane is measured from the origin above it and a
-/// highest plane from the one below, so every computed slab is at least as wide as
-/// the true one. Being strictly beyond also means that `0 x inf` (a ray parallel to
-/// a face, with an infinite inverse direction) occurs only for a ray outside that
-/// slab, where either answer is safe.
+/// highest plane from the one below, so whichever way the ray goes, every computed
+/// slab is at least as wide as the true one. Being strictly beyond also means that
+/// `0 x inf` (a ray parallel to a face, with an infinite inverse direction) occurs
+/// only for a ray outside that slab, where either answer is safe.
 struct WideRay {
-    /// Per axis, the plane the ray meets first (`axis`, or `axis + 3` when the
-    /// ray goes towards lower values) and the one it meets last.
-    near: [usize; 3],
-    far: [usize; 3],
-    /// Per axis, the rounded origin each of those planes is measured from.
-    near_origin: [Vec4; 3],
-    far_origin: [Vec4; 3],
+    /// Per axis, the origin rounded up, for the lowest planes.
+    above: [Vec4; 3],
+    /// Per axis, the origin rounded down, for the highest planes.
+    below: [Vec4; 3],
     /// Per axis, `1 / direction`.
     inv_direction: [Vec4; 3],
 }
 
 impl WideRay {
     fn new(ray: &Ray) -> WideRay {
-        let mut wide = WideRay {
-            near: [0, 1, 2],
-            far: [3, 4, 5],
-            near_origin: [Vec4::ZERO; 3],
-            far_origin: [Vec4::ZERO; 3],
-            inv_direction: [Vec4::ZERO; 3],
-        };
-        for axis in 0..3 {
-            let inv = to_single(ray.direction[axis].recip());
-            let above = Vec4::splat(round_up(ray.origin[axis]));
-            let below = Vec4::splat(round_down(ray.origin[axis]));
-            wide.inv_direction[axis] = Vec4::splat(inv);
-            if inv.is_sign_negative() {
-                (wide.near[axis], wide.far[axis]) = (axis + 3, axis);
-                (wide.near_origin[axis], wide.far_origin[axis]) = (below, above);
-            } else {
-                (wide.near_origin[axis], wide.far_origin[axis]) = (above, below);
-            }
+        let splat = |f: fn(Real) -> f32| [0, 1, 2].map(|axis| Vec4::splat(f(ray.origin[axis])));
+        WideRay {
+            above: splat(round_up),
+            below: splat(round_down),
+            inv_direction: [0, 1, 2]
+                .map(|axis| Vec4::splat(to_single(ray.direction[axis].recip()))),
         }
-        wide
     }
 
     // ANCHOR: wide_slab
     /// Which of `node`'s four boxes the ray enters before `limit` (bit `i` for
     /// child `i`), and the distances at which it enters them: the slab test of
-    /// [`Aabb::entry`] on four boxes at once. Each distance carries at most three
-    /// roundings, so the exit is widened by `1 + 2 gamma(3)`.
+    /// [`Aabb::entry`] on four boxes at once. Per axis the ray crosses the lowest
+    /// and the highest plane; the nearer crossing is where it enters the slab,
+    /// whichever way it goes. Each distance carries at most three roundings, so the
+    /// exit is widened by `1 + 2 gamma(3)`; `limit` is finite and already widened.
     #[inline(always)]
-    fn enters(&self, node: &WideNode, limit: f32) -> (u32, Vec4) {
-        let distance = |plane: usize, origin: Vec4, axis: usize| {
-            (Vec4::from_array(node.planes[plane]) - origin) * self.inv_direction[axis]
-        };
-        let near = |axis| distance(self.near[axis], self.near_origin[axis], axis);
-        let far = |axis| distance(self.far[axis], self.far_origin[axis], axis);
-        let entry = near(0).max(near(1)).max(near(2).max(Vec4::ZERO));
-        let exit = far(0).min(far(1)).min(far(2).min(Vec4::splat(limit))) * WIDENING;
+    fn enters(&self, node: &WideNode, limit: Limit) -> (u32, Vec4) {
+        let mut entry = Vec4::ZERO;
+        let mut exit = Vec4::INFINITY;
+        for axis in 0..3 {
+            let inv_direction = self.inv_direction[axis];
+            let lowest = (Vec4::from_array(node.planes[axis]) - self.above[axis]) * inv_direction;
+            let highest =
+                (Vec4::from_array(node.planes[axis + 3]) - self.below[axis]) * inv_direction;
+            entry = entry.max(lowest.min(highest));
+            exit = exit.min(lowest.max(highest));
+        }
+        let exit = (exit * WIDENING).min(Vec4::splat(limit.0));
         (entry.cmple(exit).bitmask(), entry)
     }
     // ANCHOR_END: wide_slab
@@ -140,6 +130,18 @@ impl WideRay {
 
 /// `1 + 2 gamma(3)` in single precision, rounded up.
 const WIDENING: f32 = 1.0 + 8.0 * f32::EPSILON;
+
+/// How far the box tests look: a distance rounded up to single precision and
+/// widened like a box's exit, capped at the largest finite float so that no box is
+/// entered at an infinite distance (the empty slots).
+#[derive(Clone, Copy)]
+struct Limit(f32);
+
+impl Limit {
+    fn new(t: Real) -> Limit {
+        Limit((round_up(t) * WIDENING).min(f32::MAX))
+    }
+}
 
 /// A child waiting on the traversal stack: a node, or a leaf's triangles, and the
 /// distance at which the ray enters its box.
@@ -166,6 +168,17 @@ struct Stack {
 }
 
 impl Stack {
+    /// An empty stack.
+    #[inline]
+    fn new() -> Stack {
+        Stack {
+            entries: [ROOT; STACK],
+            len: 0,
+            spilled: Vec::new(),
+        }
+    }
+
+    /// Puts `pending` on top, in the array while it has room.
     #[inline]
     fn push(&mut self, pending: Pending) {
         if self.len < STACK {
@@ -176,61 +189,60 @@ impl Stack {
         }
     }
 
+    /// The entry on top of the array, or a spilled one once the array is empty.
+    /// After a spill the order is no longer strictly last-in first-out, which costs
+    /// at most some culling, never a hit: every pending child is still visited.
     #[inline]
     fn pop(&mut self) -> Option<Pending> {
-        if let Some(pending) = self.spilled.pop() {
-            return Some(pending);
+        if self.len > 0 {
+            self.len -= 1;
+            return Some(self.entries[self.len]);
         }
-        self.len = self.len.checked_sub(1)?;
-        Some(self.entries[self.len])
+        self.spilled.pop()
     }
 
-    /// Pushes the children of `node` whose bit is set in `mask`, the nearest last
-    /// so that it is popped first.
+    /// Of the children of `node` whose bit is set in `mask`, returns the nearest,
+    /// to be visited next, and pushes the others, the nearer ones last so that they
+    /// are popped first.
     #[inline]
-    fn push_nearest_last(&mut self, node: &WideNode, mask: u32, entry: Vec4) {
+    fn push_all_but_nearest(&mut self, node: &WideNode, mask: u32, entry: Vec4) -> Option<Pending> {
         let entry = entry.to_array();
         let pending = |lane: usize| Pending {
             child: node.child[lane],
             count: node.count[lane],
             entry: entry[lane],
         };
+        if mask == 0 {
+            return None;
+        }
         let first = mask.trailing_zeros() as usize;
-        match mask.count_ones() {
-            0 => {}
-            1 => self.push(pending(first)),
-            2 => {
-                let second = (mask & (mask - 1)).trailing_zeros() as usize;
-                let (near, far) = if entry[first] <= entry[second] {
-                    (first, second)
-                } else {
-                    (second, first)
-                };
-                self.push(pending(far));
-                self.push(pending(near));
-            }
-            _ => {
-                let mut lanes: [usize; WIDTH] = [0, 1, 2, 3];
-                lanes.sort_unstable_by(|a, b| entry[*b].total_cmp(&entry[*a]));
-                for lane in lanes {
-                    if mask & (1 << lane) != 0 {
-                        self.push(pending(lane));
-                    }
+        let rest = mask & (mask - 1);
+        if rest == 0 {
+            return Some(pending(first));
+        }
+        let second = rest.trailing_zeros() as usize;
+        if rest & (rest - 1) == 0 {
+            let (near, far) = if entry[first] <= entry[second] {
+                (first, second)
+            } else {
+                (second, first)
+            };
+            self.push(pending(far));
+            return Some(pending(near));
+        }
+        let mut farthest_first: [usize; WIDTH] = [0, 1, 2, 3];
+        farthest_first.sort_unstable_by(|a, b| entry[*b].total_cmp(&entry[*a]));
+        let mut nearest = None;
+        for lane in farthest_first {
+            if mask & (1 << lane) != 0 {
+                if let Some(farther) = nearest {
+                    self.push(farther);
                 }
+                nearest = Some(pending(lane));
             }
         }
+        nearest
     }
-}
-
-/// A stack holding the root.
-macro_rules! root_stack {
-    () => {
-        Stack {
-            entries: [ROOT; STACK],
-            len: 1,
-            spilled: Vec::new(),
-        }
-    };
 }
 
 impl FastBvh {
@@ -238,10 +250,10 @@ impl FastBvh {
     /// ([`Bvh::build_sah`]), leaves of at most `max_leaf` triangles, collapsed to
     /// four children per node.
     pub fn build(mesh: &Mesh, max_leaf: u16) -> FastBvh {
-        let bvh = Bvh::build_sah(mesh, max_leaf.into());
+        let bvh = Bvh::build_sah(mesh, max_leaf.into(), GROUP);
         let mut fast = FastBvh {
             nodes: vec![],
-            corners: Vec::with_capacity(mesh.triangles.len()),
+            groups: vec![],
             ids: Vec::with_capacity(mesh.triangles.len()),
         };
         fast.nodes.push(WideNode::EMPTY);
@@ -262,13 +274,10 @@ impl FastBvh {
                     fast.nodes[at].planes[axis + 3][lane] = round_up(node.bounds.max[axis]);
                 }
                 if node.count > 0 {
-                    fast.nodes[at].child[lane] = fast.ids.len() as u32;
+                    fast.nodes[at].child[lane] = fast.groups.len() as u32;
                     fast.nodes[at].count[lane] = node.count;
                     let triangles = node.first as usize..(node.first + node.count) as usize;
-                    for &t in &bvh.order[triangles] {
-                        fast.corners.push(mesh.corners(t));
-                        fast.ids.push(t);
-                    }
+                    fast.push_leaf(mesh, &bvh.order[triangles]);
                 } else {
                     fast.nodes[at].child[lane] = fast.nodes.len() as u32;
                     unfilled.push((fast.nodes.len(), children(&bvh, n).to_vec()));
@@ -279,38 +288,54 @@ impl FastBvh {
         fast
     }
 
+    /// Appends a leaf's triangles: their groups, and their indices padded to whole
+    /// groups.
+    fn push_leaf(&mut self, mesh: &Mesh, triangles: &[u32]) {
+        for chunk in triangles.chunks(GROUP) {
+            let corners: Vec<[Vec3; 3]> = chunk.iter().map(|&t| mesh.corners(t)).collect();
+            self.groups.push(TriangleGroup::new(&corners));
+            let last = chunk.len() - 1;
+            self.ids
+                .extend((0..GROUP).map(|lane| chunk[lane.min(last)]));
+        }
+    }
+
     // ANCHOR: fast_traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`: the same
     /// hit as [`Bvh::intersect`] (equal distances go to the lower triangle index).
-    /// The children a ray enters are visited nearest first, and a child is skipped
-    /// when popped if a hit found meanwhile is closer than its box.
+    /// Of the children a ray enters, the nearest is visited next and the others wait
+    /// on the stack, nearer ones on top; a child is skipped when popped if a hit
+    /// found meanwhile is closer than its box. In a leaf, only the triangles the
+    /// pre-test keeps get the exact test.
     pub fn intersect(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let wide = WideRay::new(ray);
         let sheared = ShearedRay::new(ray);
+        let group_ray = GroupRay::new(&sheared);
         let mut best: Option<(Real, u32, TriangleHit)> = None;
         // The box test's limit, and the triangle test's (which lets an equal
         // distance through, for the lower index to win).
-        let mut box_limit = round_up(t_max);
+        let mut box_limit = Limit::new(t_max);
         let mut triangle_limit = t_max;
-        let mut stack = root_stack!();
-        while let Some(pending) = stack.pop() {
-            if pending.entry > box_limit * WIDENING {
+        let mut stack = Stack::new();
+        let mut next = Some(ROOT);
+        while let Some(pending) = next.take().or_else(|| stack.pop()) {
+            if pending.entry > box_limit.0 {
                 continue;
             }
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
                 let (mask, entry) = wide.enters(node, box_limit);
-                stack.push_nearest_last(node, mask, entry);
+                next = stack.push_all_but_nearest(node, mask, entry);
                 continue;
             }
-            for slot in self.slots(pending) {
+            for slot in self.candidates(mesh, pending, &group_ray) {
                 let found = self.test(mesh, slot, ray, &sheared, triangle_limit);
                 let id = self.ids[slot];
                 if let Some(at) = found
                     && best.is_none_or(|b| (at.t, id) < (b.0, b.1))
                 {
                     best = Some((at.t, id, at));
-                    box_limit = round_up(at.t);
+                    box_limit = Limit::new(at.t);
                     triangle_limit = at.t.next_up();
                 }
             }
@@ -324,8 +349,10 @@ impl FastBvh {
     pub fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let wide = WideRay::new(ray);
         let sheared = ShearedRay::new(ray);
-        let limit = round_up(t_max);
-        let mut stack = root_stack!();
+        let group_ray = GroupRay::new(&sheared);
+        let limit = Limit::new(t_max);
+        let mut stack = Stack::new();
+        stack.push(ROOT);
         while let Some(pending) = stack.pop() {
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
@@ -340,7 +367,7 @@ impl FastBvh {
                     });
                 }
             } else if self
-                .slots(pending)
+                .candidates(mesh, pending, &group_ray)
                 .any(|slot| self.test(mesh, slot, ray, &sheared, t_max).is_some())
             {
                 return true;
@@ -349,9 +376,30 @@ impl FastBvh {
         false
     }
 
-    /// The triangle slots of a leaf.
-    fn slots(&self, leaf: Pending) -> std::ops::Range<usize> {
-        leaf.child as usize..leaf.child as usize + leaf.count as usize
+    /// The triangle slots of a leaf that the ray may meet: those the single-precision
+    /// pre-test keeps ([`TriangleGroup::candidates`]), for the watertight test; all
+    /// of them for the course's test, whose own rounding the pre-test's margin does
+    /// not cover.
+    fn candidates<'a>(
+        &'a self,
+        mesh: &Mesh,
+        leaf: Pending,
+        ray: &'a GroupRay,
+    ) -> impl Iterator<Item = usize> + 'a {
+        let pretest = mesh.triangle_test == TriangleTest::Watertight;
+        let first = leaf.child as usize;
+        let groups = (leaf.count as usize).div_ceil(GROUP);
+        (first..first + groups).flat_map(move |g| {
+            let mut mask = lanes(leaf.count as usize - (g - first) * GROUP);
+            if pretest {
+                mask &= self.groups[g].candidates(ray);
+            }
+            std::iter::from_fn(move || {
+                let lane = mask.trailing_zeros() as usize;
+                mask &= mask.checked_sub(1)?;
+                Some(GROUP * g + lane)
+            })
+        })
     }
 
     /// The triangle in `slot` met by `ray` closer than `t_max`, with the mesh's test.
@@ -364,7 +412,7 @@ impl FastBvh {
         sheared: &ShearedRay,
         t_max: Real,
     ) -> Option<TriangleHit> {
-        let [a, b, c] = self.corners[slot];
+        let [a, b, c] = mesh.corners(self.ids[slot]);
         match mesh.triangle_test {
             TriangleTest::Watertight => sheared.intersect(a, b, c, t_max),
             TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, t_max),

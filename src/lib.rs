@@ -86,6 +86,8 @@ mod termination;
 mod texture;
 #[cfg(feature = "s5")]
 mod triangle;
+#[cfg(feature = "s6")]
+mod triangle_group;
 mod values;
 mod variant;
 #[cfg(feature = "s5")]

@@ -653,7 +653,7 @@ fn rays(
     let start = Instant::now();
     mesh.search = match bvh {
         BvhKind::Midpoint => Search::Bvh(Bvh::build(&mesh)),
-        BvhKind::Sah => Search::Bvh(Bvh::build_sah(&mesh, leaf.into())),
+        BvhKind::Sah => Search::Bvh(Bvh::build_sah(&mesh, leaf.into(), 1)),
         BvhKind::Fast => Search::FastBvh(raycourse::FastBvh::build(&mesh, leaf)),
     };
     println!(

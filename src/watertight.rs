@@ -17,9 +17,12 @@ use crate::triangle::TriangleHit;
 /// becomes `(0, 0, 1)`: `x' = x + s_x z`, `y' = y + s_y z`, `z' = s_z z`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShearedRay {
-    origin: Vec3,
-    axes: [usize; 3],
-    shear: Vec3,
+    /// The ray's origin, which becomes the frame's origin.
+    pub(crate) origin: Vec3,
+    /// The axes that become `x`, `y` and `z`: `z` is the direction's largest.
+    pub(crate) axes: [usize; 3],
+    /// The shear factors `s_x`, `s_y` and the scale `s_z`.
+    pub(crate) shear: Vec3,
 }
 
 // ANCHOR: ray_space
