@@ -5,6 +5,7 @@
 //! triangles the ray may meet. It finds exactly the hits the course's traversal
 //! finds; only the number of steps and the memory traffic shrink.
 
+use arrayvec::ArrayVec;
 use glam::Vec4;
 
 use crate::bvh::Bvh;
@@ -161,8 +162,8 @@ const ROOT: Pending = Pending {
 
 /// The children waiting to be visited, the next on top.
 struct Stack {
-    entries: [Pending; STACK],
-    len: usize,
+    /// The first `STACK` entries, in place (nothing to allocate or clear per ray).
+    entries: ArrayVec<Pending, STACK>,
     /// Entries beyond the first `STACK`, for deep trees.
     spilled: Vec<Pending>,
 }
@@ -172,8 +173,7 @@ impl Stack {
     #[inline]
     fn new() -> Stack {
         Stack {
-            entries: [ROOT; STACK],
-            len: 0,
+            entries: ArrayVec::new(),
             spilled: Vec::new(),
         }
     }
@@ -181,11 +181,8 @@ impl Stack {
     /// Puts `pending` on top, in the array while it has room.
     #[inline]
     fn push(&mut self, pending: Pending) {
-        if self.len < STACK {
-            self.entries[self.len] = pending;
-            self.len += 1;
-        } else {
-            self.spilled.push(pending);
+        if let Err(full) = self.entries.try_push(pending) {
+            self.spilled.push(full.element());
         }
     }
 
@@ -194,11 +191,7 @@ impl Stack {
     /// at most some culling, never a hit: every pending child is still visited.
     #[inline]
     fn pop(&mut self) -> Option<Pending> {
-        if self.len > 0 {
-            self.len -= 1;
-            return Some(self.entries[self.len]);
-        }
-        self.spilled.pop()
+        self.entries.pop().or_else(|| self.spilled.pop())
     }
 
     /// Of the children of `node` whose bit is set in `mask`, returns the nearest,
