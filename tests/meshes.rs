@@ -149,6 +149,32 @@ fn searches_agree_on_the_ogre() {
     searches_agree("ogre/ogre.obj", 100_000);
 }
 
+/// With the course's triangle test, which the fast BVH's single-precision pre-test
+/// does not serve, the fast BVH still finds brute force's hits.
+#[cfg(feature = "s6")]
+#[test]
+fn the_fast_bvh_agrees_with_the_course_triangle_test() {
+    let data = read_obj(&asset("spot/spot.obj")).unwrap();
+    let placement = Placement {
+        scale: 1.0,
+        rotation: Mat3::IDENTITY,
+        translation: Vec3::ZERO,
+    };
+    let mut mesh = Mesh::new(&data, &placement);
+    mesh.triangle_test = raycourse::TriangleTest::MollerTrumbore;
+    let rays = rays_at(&mesh, 10_000);
+    let brute = hits(&mesh, &rays);
+    assert!(
+        brute.iter().flatten().count() > 2_500,
+        "the test is not vacuous"
+    );
+    mesh.search = Search::FastBvh(raycourse::FastBvh::build(&mesh, 8));
+    assert!(
+        hits(&mesh, &rays) == brute,
+        "fast BVH differs from brute force"
+    );
+}
+
 /// A scene in a temporary folder with one mesh entry and the given files.
 fn scene_error(mesh_keys: &str, files: &[(&str, &[u8])]) -> String {
     let dir = tempfile::tempdir().unwrap();
