@@ -49,6 +49,16 @@ fn ogre_loads_with_normals_and_uvs_but_no_material() {
     assert_eq!(data.diffuse_texture, None, "ogre.obj has no mtllib");
 }
 
+/// The mesh of `data` where the file puts it.
+fn unplaced(data: &ObjData) -> Mesh {
+    let placement = Placement {
+        scale: 1.0,
+        rotation: Mat3::IDENTITY,
+        translation: Vec3::ZERO,
+    };
+    Mesh::new(data, &placement)
+}
+
 /// `count` seeded rays: four in five from a sphere around the mesh towards random
 /// points of its box, one in five leaving a random point of a triangle in a random
 /// direction from just above it, as a bounce does (the single-precision pre-test of
@@ -90,12 +100,7 @@ fn hits(mesh: &Mesh, rays: &[Ray]) -> Vec<Option<MeshHit>> {
 /// same distance for every ray.
 fn searches_agree(obj: &str, count: u64) {
     let data = read_obj(&asset(obj)).unwrap();
-    let placement = Placement {
-        scale: 1.0,
-        rotation: Mat3::IDENTITY,
-        translation: Vec3::ZERO,
-    };
-    let mut mesh = Mesh::new(&data, &placement);
+    let mut mesh = unplaced(&data);
     let rays = rays_at(&mesh, count);
     let brute = hits(&mesh, &rays);
     let hit_count = brute.iter().flatten().count();
@@ -155,12 +160,7 @@ fn searches_agree_on_the_ogre() {
 #[test]
 fn the_fast_bvh_agrees_with_the_course_triangle_test() {
     let data = read_obj(&asset("spot/spot.obj")).unwrap();
-    let placement = Placement {
-        scale: 1.0,
-        rotation: Mat3::IDENTITY,
-        translation: Vec3::ZERO,
-    };
-    let mut mesh = Mesh::new(&data, &placement);
+    let mut mesh = unplaced(&data);
     mesh.triangle_test = raycourse::TriangleTest::MollerTrumbore;
     let rays = rays_at(&mesh, 10_000);
     let brute = hits(&mesh, &rays);
@@ -258,12 +258,7 @@ fn textures_need_session_seven() {
 fn missing_normals_fall_back_to_the_geometric_normal() {
     let data = read_obj_text(TRIANGLE);
     assert!(data.normals.is_empty());
-    let placement = Placement {
-        scale: 1.0,
-        rotation: Mat3::IDENTITY,
-        translation: Vec3::ZERO,
-    };
-    let mut mesh = Mesh::new(&data, &placement);
+    let mut mesh = unplaced(&data);
     mesh.shading = raycourse::Shading::Smooth;
     let ray = Ray::new(Vec3::new(0.2, 0.2, 1.0), -Vec3::Z);
     let hit = mesh.intersect(&ray, Real::INFINITY).unwrap();
