@@ -12,7 +12,7 @@ use crate::bvh::Bvh;
 use crate::math::{Real, Vec3, to_single};
 use crate::mesh::{Mesh, MeshHit};
 use crate::ray::Ray;
-use crate::triangle::{TriangleHit, TriangleTest, intersect_triangle};
+use crate::triangle::{TriangleHit, TriangleTest};
 use crate::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
 use crate::watertight::ShearedRay;
 
@@ -146,7 +146,7 @@ impl Limit {
 
 /// A child waiting on the traversal stack: a node, or a leaf's triangles, and the
 /// distance at which the ray enters its box.
-#[derive(Clone, Copy, Default)]
+#[derive(Clone, Copy)]
 struct Pending {
     child: u32,
     count: u32,
@@ -322,9 +322,8 @@ impl FastBvh {
                 continue;
             }
             for slot in self.candidates(mesh, pending, &group_ray) {
-                let found = self.test(mesh, slot, ray, &sheared, triangle_limit);
                 let id = self.ids[slot];
-                if let Some(at) = found
+                if let Some(at) = mesh.hit_triangle(ray, &sheared, id, triangle_limit)
                     && best.is_none_or(|b| (at.t, id) < (b.0, b.1))
                 {
                     best = Some((at.t, id, at));
@@ -359,10 +358,10 @@ impl FastBvh {
                         entry: 0.0,
                     });
                 }
-            } else if self
-                .candidates(mesh, pending, &group_ray)
-                .any(|slot| self.test(mesh, slot, ray, &sheared, t_max).is_some())
-            {
+            } else if self.candidates(mesh, pending, &group_ray).any(|slot| {
+                let id = self.ids[slot];
+                mesh.hit_triangle(ray, &sheared, id, t_max).is_some()
+            }) {
                 return true;
             }
         }
@@ -388,28 +387,13 @@ impl FastBvh {
                 mask &= self.groups[g].candidates(ray);
             }
             std::iter::from_fn(move || {
-                let lane = mask.trailing_zeros() as usize;
-                mask &= mask.checked_sub(1)?;
-                Some(GROUP * g + lane)
+                (mask != 0).then(|| {
+                    let lane = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    GROUP * g + lane
+                })
             })
         })
-    }
-
-    /// The triangle in `slot` met by `ray` closer than `t_max`, with the mesh's test.
-    #[inline]
-    fn test(
-        &self,
-        mesh: &Mesh,
-        slot: usize,
-        ray: &Ray,
-        sheared: &ShearedRay,
-        t_max: Real,
-    ) -> Option<TriangleHit> {
-        let [a, b, c] = mesh.corners(self.ids[slot]);
-        match mesh.triangle_test {
-            TriangleTest::Watertight => sheared.intersect(a, b, c, t_max),
-            TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, t_max),
-        }
     }
 }
 

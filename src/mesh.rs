@@ -239,6 +239,23 @@ impl Mesh {
     }
 
     // ANCHOR: nearest_triangle
+    /// Where `ray` meets the triangle numbered `triangle` closer than `t_max`, with
+    /// the mesh's test (`sheared` is the ray's frame, for the watertight one).
+    #[inline]
+    pub fn hit_triangle(
+        &self,
+        ray: &Ray,
+        sheared: &ShearedRay,
+        triangle: u32,
+        t_max: Real,
+    ) -> Option<TriangleHit> {
+        let [a, b, c] = self.corners(triangle);
+        match self.triangle_test {
+            TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, t_max),
+            TriangleTest::Watertight => sheared.intersect(a, b, c, t_max),
+        }
+    }
+
     /// The nearest hit among `triangles`, closer than `best` if given. Equal
     /// distances go to the lower triangle index, so that every search order finds
     /// the same triangle.
@@ -252,12 +269,7 @@ impl Mesh {
         let sheared = ShearedRay::new(ray);
         for triangle in triangles {
             let limit = best.map_or(t_max, |b| b.at.t.next_up());
-            let [a, b, c] = self.corners(triangle);
-            let found = match self.triangle_test {
-                TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, limit),
-                TriangleTest::Watertight => sheared.intersect(a, b, c, limit),
-            };
-            if let Some(at) = found
+            if let Some(at) = self.hit_triangle(ray, &sheared, triangle, limit)
                 && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
             {
                 best = Some(MeshHit { triangle, at });
@@ -271,13 +283,9 @@ impl Mesh {
     /// first it finds.
     pub fn hits_any(&self, ray: &Ray, triangles: impl Iterator<Item = u32>, t_max: Real) -> bool {
         let sheared = ShearedRay::new(ray);
-        triangles.into_iter().any(|triangle| {
-            let [a, b, c] = self.corners(triangle);
-            match self.triangle_test {
-                TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, t_max).is_some(),
-                TriangleTest::Watertight => sheared.intersect(a, b, c, t_max).is_some(),
-            }
-        })
+        triangles
+            .into_iter()
+            .any(|triangle| self.hit_triangle(ray, &sheared, triangle, t_max).is_some())
     }
 
     // ANCHOR: mesh_intersect
