@@ -73,7 +73,8 @@ impl RaySet {
 
     /// The ray set held in `bytes`: the 20-byte header (`RAYS`, version 1, kind,
     /// count) and `count` records of eight little-endian `f32`: origin, direction,
-    /// `tmin` (0) and `tmax`.
+    /// `tmin` and `tmax`. Every ray is traced from `t = 0`, so a record whose `tmin` is
+    /// not 0 is refused rather than traced over the wrong interval.
     pub fn parse(bytes: &[u8]) -> Result<RaySet, String> {
         let word = |at: usize| u32::from_le_bytes(bytes[at..at + 4].try_into().unwrap());
         if bytes.len() < HEADER || &bytes[..4] != b"RAYS" {
@@ -113,6 +114,14 @@ impl RaySet {
             let direction = Vec3::new(f(3), f(4), f(5));
             if !(origin.is_finite() && direction.is_finite() && f(7) >= 0.0) {
                 return Err(format!("ray {} is not a finite ray", rays.len()));
+            }
+            if f(6) != 0.0 {
+                return Err(format!(
+                    "ray {} starts at tmin = {} (this program traces every ray from \
+                     tmin = 0, as the benchmark's sets do)",
+                    rays.len(),
+                    f(6)
+                ));
             }
             rays.push(Ray { origin, direction });
             t_max.push(f(7));
@@ -244,5 +253,11 @@ mod tests {
         assert!(RaySet::parse(&huge).unwrap_err().contains("bytes"));
         let nan = file(0, &[[f32::NAN, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]]);
         assert!(RaySet::parse(&nan).unwrap_err().contains("ray 0"));
+        let late = file(0, &[[0.0; 8], [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.5, 1.0]]);
+        assert!(
+            RaySet::parse(&late)
+                .unwrap_err()
+                .contains("ray 1 starts at tmin = 0.5")
+        );
     }
 }
