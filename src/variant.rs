@@ -34,8 +34,9 @@ pub struct VariantError {
 
 impl Variant {
     /// Reads `label:key=value,key=value`. Values are TOML (`2`, `true`, `0.5`); a
-    /// bare word is a string (`acceleration=fast`). Without a label, the edits
-    /// name the variant.
+    /// bare word is a string (`acceleration=fast`). Without a label, the edits,
+    /// separated by spaces, name the variant. The label is a column of the CSV, so it
+    /// may not hold a comma.
     pub fn parse(text: &str) -> Result<Variant, VariantError> {
         let error = |message: String| VariantError {
             text: text.to_owned(),
@@ -43,8 +44,16 @@ impl Variant {
         };
         let (label, list) = match text.split_once(':') {
             Some((label, list)) => (label.trim().to_owned(), list),
-            None => (text.trim().to_owned(), text),
+            None => (
+                text.split(',').map(str::trim).collect::<Vec<_>>().join(" "),
+                text,
+            ),
         };
+        if label.contains(',') {
+            return Err(error(format!(
+                "the label `{label}` holds a comma, which would split its CSV column"
+            )));
+        }
         let mut edits = vec![];
         for item in list.split(',').map(str::trim).filter(|i| !i.is_empty()) {
             let (key, value) = item
@@ -221,6 +230,13 @@ mod tests {
     }
 
     #[test]
+    fn unlabelled_edits_name_the_variant_without_commas() {
+        let variant = Variant::parse("render.bounces=2, render.samples=4").unwrap();
+        assert_eq!(variant.label, "render.bounces=2 render.samples=4");
+        assert_eq!(variant.edits.len(), 2);
+    }
+
+    #[test]
     fn values_are_toml_or_bare_words() {
         assert_eq!(toml_value("true"), toml::Value::Boolean(true));
         assert_eq!(toml_value("0.5"), toml::Value::Float(0.5));
@@ -237,6 +253,7 @@ mod tests {
         );
         assert!(message("x:render.bounces").contains("is not `key=value`"));
         assert!(message("x:").contains("no `key=value` edits"));
+        assert!(message("a,b:render.bounces=2").contains("label `a,b` holds a comma"));
         let missing = Variant::parse("x:light.radius=2").unwrap().apply(SCENE);
         assert!(missing.unwrap_err().message.contains("no `[light]`"));
     }
