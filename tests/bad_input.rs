@@ -4,9 +4,12 @@
 //! on stderr naming the file and what is wrong, exit code 2, and no change to an
 //! existing output image.
 
+mod common;
+
+use std::ffi::OsStr;
 use std::path::Path;
 
-use assert_cmd::cargo::cargo_bin_cmd;
+use common::{run, text};
 use raycourse::SESSION;
 
 struct Case {
@@ -48,13 +51,17 @@ fn every_bad_input_fails_cleanly_and_writes_nothing() {
     assert!(cases.len() >= 40, "{} cases", cases.len());
     let mut ran = 0;
     for case in cases.iter().filter(|c| c.session <= SESSION) {
-        let output = cargo_bin_cmd!("raycourse")
-            .args(["render", &case.name, "--quiet", "--out"])
-            .arg(&image)
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        let stderr = String::from_utf8_lossy(&output.stderr);
+        let output = run(
+            &[
+                OsStr::new("render"),
+                case.name.as_ref(),
+                "--quiet".as_ref(),
+                "--out".as_ref(),
+                image.as_os_str(),
+            ],
+            &dir,
+        );
+        let stderr = text(&output.stderr);
         assert_eq!(output.status.code(), Some(2), "{}: {stderr}", case.name);
         assert_eq!(
             stderr.lines().count(),

@@ -1,22 +1,11 @@
 //! The `raycourse` command as a student runs it.
 
+mod common;
+
 use std::path::Path;
-use std::process::Output;
 
-use assert_cmd::cargo::cargo_bin_cmd;
+use common::{run, text};
 use raycourse::stages;
-
-fn run(args: &[&str], dir: &Path) -> Output {
-    cargo_bin_cmd!("raycourse")
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap()
-}
-
-fn text(bytes: &[u8]) -> String {
-    String::from_utf8_lossy(bytes).into_owned()
-}
 
 #[test]
 fn list_shows_exactly_the_stages_of_this_build() {

@@ -1,21 +1,15 @@
 //! `raycourse converge` and `raycourse plot`: the error of Monte Carlo renders
 //! against a reference, measured as a student runs it.
 
-use std::path::Path;
-use std::process::Output;
+mod common;
 
-use assert_cmd::cargo::cargo_bin_cmd;
+#[cfg(feature = "s3")]
+use std::path::Path;
+
+use common::{run, text};
 #[cfg(feature = "s3")]
 use raycourse::{Real, fitted_slope};
 use raycourse::{Rung, read_rungs};
-
-fn run(args: &[&str], dir: &Path) -> Output {
-    cargo_bin_cmd!("raycourse")
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .unwrap()
-}
 
 /// Runs a study in `dir` and returns its rows.
 #[cfg(feature = "s3")]
@@ -23,11 +17,7 @@ fn study(dir: &Path, args: &[&str]) -> Vec<Rung> {
     let mut all = vec!["converge", "-q", "--out", "study"];
     all.extend(args);
     let out = run(&all, dir);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
     read_rungs(&std::fs::read_to_string(dir.join("study.csv")).unwrap()).unwrap()
 }
 
@@ -158,7 +148,7 @@ fn a_deterministic_stage_has_no_error_and_no_plot() {
         dir.path(),
     );
     assert!(out.status.success());
-    assert!(String::from_utf8_lossy(&out.stdout).contains("nothing to plot"));
+    assert!(text(&out.stdout).contains("nothing to plot"));
     let csv = std::fs::read_to_string(dir.path().join("out/converge/white-disk.csv")).unwrap();
     let rungs = read_rungs(&csv).unwrap();
     assert_eq!(rungs.len(), 3);
@@ -174,16 +164,16 @@ fn bad_variants_and_files_are_named() {
         dir.path(),
     );
     assert_eq!(out.status.code(), Some(2));
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let stderr = text(&out.stderr);
     assert!(stderr.contains("render.bogus"), "{stderr}");
     let out = run(&["converge", "nowhere"], dir.path());
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("`nowhere` is neither a stage"));
+    assert!(text(&out.stderr).contains("`nowhere` is neither a stage"));
     std::fs::write(dir.path().join("bad.csv"), "variant,samples\n").unwrap();
     let out = run(&["plot", "bad.csv", "--out", "plot.png"], dir.path());
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
-        String::from_utf8_lossy(&out.stderr).trim(),
+        text(&out.stderr).trim(),
         format!(
             "error: bad.csv: line 1: expected the header `{}`",
             Rung::CSV_HEADER
@@ -204,9 +194,6 @@ fn plot_merges_studies() {
     }
     let out = run(&["plot", "a.csv", "b.csv", "--out", "ab.png"], dir.path());
     assert!(out.status.success());
-    assert_eq!(
-        String::from_utf8_lossy(&out.stdout).trim(),
-        "6 rows -> ab.png"
-    );
+    assert_eq!(text(&out.stdout).trim(), "6 rows -> ab.png");
     assert!(dir.path().join("ab.png").exists());
 }
