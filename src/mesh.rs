@@ -109,17 +109,21 @@ pub struct ObjData {
 /// Reads the OBJ file at `path` with tobj: polygons are split into triangles and
 /// every corner gets one index for position, normal and texture coordinates. The
 /// models of the file are merged; normals or texture coordinates are kept only if
-/// every model has them. A missing or broken MTL file only loses the texture.
+/// every model has them. A missing or broken MTL file only loses the texture. The
+/// file is read once: its face indices are checked, then tobj parses the same bytes.
 pub fn read_obj(path: &Path) -> Result<ObjData, String> {
-    if let Ok(bytes) = std::fs::read(path) {
-        check_face_indices(&String::from_utf8_lossy(&bytes))?;
-    }
+    let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
+    check_face_indices(&String::from_utf8_lossy(&bytes))?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
         ..Default::default()
     };
-    let (models, materials) = tobj::load_obj(path, &options).map_err(|e| e.to_string())?;
+    let folder = path.parent().unwrap_or(Path::new(""));
+    let (models, materials) = tobj::load_obj_buf(&mut bytes.as_slice(), &options, |mtl| {
+        tobj::load_mtl(folder.join(mtl))
+    })
+    .map_err(|e| e.to_string())?;
     let mut data = ObjData {
         positions: Vec::new(),
         normals: Vec::new(),
@@ -127,7 +131,7 @@ pub fn read_obj(path: &Path) -> Result<ObjData, String> {
         triangles: Vec::new(),
         diffuse_texture: materials.ok().and_then(|m| {
             let name = m.first()?.diffuse_texture.clone()?;
-            Some(path.parent().unwrap_or(Path::new("")).join(name))
+            Some(folder.join(name))
         }),
     };
     let with_normals = models.iter().all(|m| !m.mesh.normals.is_empty());

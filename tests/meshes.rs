@@ -197,7 +197,7 @@ const TRIANGLE: &[u8] = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1
 fn a_missing_obj_file_is_named() {
     assert_eq!(
         scene_error("obj = \"nowhere.obj\"", &[]),
-        "DIR/nowhere.obj: cannot load the mesh: open file failed (referred to by \
+        "DIR/nowhere.obj: cannot load the mesh: No such file or directory (os error 2) (referred to by \
          DIR/scene.toml)"
     );
 }
