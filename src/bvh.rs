@@ -7,6 +7,7 @@ use crate::aabb::Aabb;
 use crate::math::{Real, Vec3};
 use crate::mesh::{Mesh, MeshHit};
 use crate::ray::Ray;
+use crate::watertight::ShearedRay;
 
 /// The most triangles a leaf holds: the course stops splitting at small leaves.
 pub const LEAF_SIZE: usize = 4;
@@ -100,6 +101,7 @@ impl Bvh {
     /// beyond the nearest hit found so far is skipped.
     pub fn intersect(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let inv = ray.direction.recip();
+        let sheared = ShearedRay::new(ray);
         let mut best: Option<MeshHit> = None;
         let mut stack: SmallVec<[(u32, Real); 64]> = SmallVec::new();
         if let Some(t) = self.nodes[0].bounds.entry(ray, inv, t_max) {
@@ -113,7 +115,7 @@ impl Bvh {
             let node = self.nodes[index as usize];
             if node.count > 0 {
                 let leaf = &self.order[node.first as usize..(node.first + node.count) as usize];
-                best = mesh.nearest_among(ray, leaf.iter().copied(), best, t_max);
+                best = mesh.nearest_among(ray, &sheared, leaf.iter().copied(), best, t_max);
                 continue;
             }
             let [a, b] = [node.first, node.first + 1]
@@ -138,6 +140,7 @@ impl Bvh {
     /// through the boxes, in any order, ending at the first triangle hit.
     pub fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let inv = ray.direction.recip();
+        let sheared = ShearedRay::new(ray);
         let mut stack: SmallVec<[u32; 64]> = SmallVec::new();
         stack.push(0);
         while let Some(index) = stack.pop() {
@@ -147,7 +150,7 @@ impl Bvh {
             }
             if node.count > 0 {
                 let leaf = &self.order[node.first as usize..(node.first + node.count) as usize];
-                if mesh.hits_any(ray, leaf.iter().copied(), t_max) {
+                if mesh.hits_any(ray, &sheared, leaf.iter().copied(), t_max) {
                     return true;
                 }
             } else {

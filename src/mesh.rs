@@ -262,18 +262,19 @@ impl Mesh {
 
     /// The nearest hit among `triangles`, closer than `best` if given. Equal
     /// distances go to the lower triangle index, so that every search order finds
-    /// the same triangle.
+    /// the same triangle. `sheared` is `ShearedRay::new(ray)`, made once per ray by
+    /// the caller, however many leaves of a hierarchy the ray visits.
     pub fn nearest_among(
         &self,
         ray: &Ray,
+        sheared: &ShearedRay,
         triangles: impl Iterator<Item = u32>,
         mut best: Option<MeshHit>,
         t_max: Real,
     ) -> Option<MeshHit> {
-        let sheared = ShearedRay::new(ray);
         for triangle in triangles {
             let limit = best.map_or(t_max, |b| b.at.t.next_up());
-            if let Some(at) = self.hit_triangle(ray, &sheared, triangle, limit)
+            if let Some(at) = self.hit_triangle(ray, sheared, triangle, limit)
                 && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
             {
                 best = Some(MeshHit { triangle, at });
@@ -284,12 +285,16 @@ impl Mesh {
     // ANCHOR_END: nearest_triangle
 
     /// Whether `ray` meets any of `triangles` closer than `t_max`; stops at the
-    /// first it finds.
-    pub fn hits_any(&self, ray: &Ray, triangles: impl Iterator<Item = u32>, t_max: Real) -> bool {
-        let sheared = ShearedRay::new(ray);
-        triangles
-            .into_iter()
-            .any(|triangle| self.hit_triangle(ray, &sheared, triangle, t_max).is_some())
+    /// first it finds. `sheared` is `ShearedRay::new(ray)`, as for
+    /// [`Mesh::nearest_among`].
+    pub fn hits_any(
+        &self,
+        ray: &Ray,
+        sheared: &ShearedRay,
+        mut triangles: impl Iterator<Item = u32>,
+        t_max: Real,
+    ) -> bool {
+        triangles.any(|triangle| self.hit_triangle(ray, sheared, triangle, t_max).is_some())
     }
 
     // ANCHOR: mesh_intersect
@@ -297,10 +302,10 @@ impl Mesh {
     pub fn intersect(&self, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let all = 0..self.triangles.len() as u32;
         match &self.search {
-            Search::BruteForce => self.nearest_among(ray, all, None, t_max),
+            Search::BruteForce => self.nearest_among(ray, &ShearedRay::new(ray), all, None, t_max),
             Search::BoundingBox => {
                 self.bounds.entry(ray, ray.direction.recip(), t_max)?;
-                self.nearest_among(ray, all, None, t_max)
+                self.nearest_among(ray, &ShearedRay::new(ray), all, None, t_max)
             }
             #[cfg(feature = "s6")]
             Search::Bvh(bvh) => bvh.intersect(self, ray, t_max),
