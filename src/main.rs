@@ -858,7 +858,10 @@ fn converge(
             last.efficiency()
         );
     }
-    let title = format!("{name}: error against samples and time");
+    let title = match &compare {
+        Some(comparison) => format!("{name} ({comparison}): error against samples and time"),
+        None => format!("{name}: error against samples and time"),
+    };
     match raycourse::plot_rungs(&title, &rungs) {
         Some(png) => {
             let png_path = out.with_extension("png");
