@@ -69,8 +69,9 @@ impl ShearedRay {
     /// `e1 = c_x a_y - c_y a_x` and `e2 = a_x b_y - a_y b_x` are twice the signed
     /// areas of the triangles the ray's axis makes with each edge. The ray meets the
     /// triangle when they share a sign (either side is hit); they are the
-    /// barycentric weights of `a`, `b` and `c` once divided by their sum (see
-    /// [`edge`] for how a shared edge is kept consistent). The distance is
+    /// barycentric weights of `a`, `b` and `c` once divided by their sum (each is
+    /// recomputed with its exact sign when it rounds to 0, so that two triangles
+    /// sharing an edge decide it alike). The distance is
     /// `t = (e0 a_z + e1 b_z + e2 c_z) s_z / (e0 + e1 + e2)`. A ray spawned from a
     /// surface starts beyond the error bound of its hit point ([`crate::Hit::spawn`]),
     /// so it cannot meet the triangle it left again; pbrt-v4 also refuses any `t`
