@@ -12,7 +12,7 @@ use crate::bvh::Bvh;
 use crate::math::{Real, Vec3, to_single};
 use crate::mesh::{Mesh, MeshHit};
 use crate::ray::Ray;
-use crate::triangle::{TriangleHit, TriangleTest};
+use crate::triangle::TriangleTest;
 use crate::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
 use crate::watertight::ShearedRay;
 
@@ -303,8 +303,8 @@ impl FastBvh {
     pub fn intersect(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let wide = WideRay::new(ray);
         let sheared = ShearedRay::new(ray);
-        let group_ray = GroupRay::new(&sheared);
-        let mut best: Option<(Real, u32, TriangleHit)> = None;
+        let group_ray = pretest_ray(mesh, &sheared);
+        let mut best: Option<MeshHit> = None;
         // The box test's limit, and the triangle test's (which lets an equal
         // distance through, for the lower index to win).
         let mut box_limit = Limit::new(t_max);
@@ -321,18 +321,18 @@ impl FastBvh {
                 next = stack.push_all_but_nearest(node, mask, entry);
                 continue;
             }
-            for slot in self.candidates(mesh, pending, &group_ray) {
-                let id = self.ids[slot];
-                if let Some(at) = mesh.hit_triangle(ray, &sheared, id, triangle_limit)
-                    && best.is_none_or(|b| (at.t, id) < (b.0, b.1))
+            for slot in self.candidates(pending, group_ray.as_ref()) {
+                let triangle = self.ids[slot];
+                if let Some(at) = mesh.hit_triangle(ray, &sheared, triangle, triangle_limit)
+                    && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
                 {
-                    best = Some((at.t, id, at));
+                    best = Some(MeshHit { triangle, at });
                     box_limit = Limit::new(at.t);
                     triangle_limit = at.t.next_up();
                 }
             }
         }
-        best.map(|(_, triangle, at)| MeshHit { triangle, at })
+        best
     }
     // ANCHOR_END: fast_traverse
 
@@ -341,7 +341,7 @@ impl FastBvh {
     pub fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let wide = WideRay::new(ray);
         let sheared = ShearedRay::new(ray);
-        let group_ray = GroupRay::new(&sheared);
+        let group_ray = pretest_ray(mesh, &sheared);
         let limit = Limit::new(t_max);
         let mut stack = Stack::new();
         stack.push(ROOT);
@@ -358,7 +358,7 @@ impl FastBvh {
                         entry: 0.0,
                     });
                 }
-            } else if self.candidates(mesh, pending, &group_ray).any(|slot| {
+            } else if self.candidates(pending, group_ray.as_ref()).any(|slot| {
                 let id = self.ids[slot];
                 mesh.hit_triangle(ray, &sheared, id, t_max).is_some()
             }) {
@@ -369,21 +369,18 @@ impl FastBvh {
     }
 
     /// The triangle slots of a leaf that the ray may meet: those the single-precision
-    /// pre-test keeps ([`TriangleGroup::candidates`]), for the watertight test; all
-    /// of them for the course's test, whose own rounding the pre-test's margin does
-    /// not cover.
+    /// pre-test keeps ([`TriangleGroup::candidates`]) when there is a pre-test ray,
+    /// every slot otherwise.
     fn candidates<'a>(
         &'a self,
-        mesh: &Mesh,
         leaf: Pending,
-        ray: &'a GroupRay,
+        ray: Option<&'a GroupRay>,
     ) -> impl Iterator<Item = usize> + 'a {
-        let pretest = mesh.triangle_test == TriangleTest::Watertight;
         let first = leaf.child as usize;
         let groups = (leaf.count as usize).div_ceil(GROUP);
         (first..first + groups).flat_map(move |g| {
             let mut mask = lanes(leaf.count as usize - (g - first) * GROUP);
-            if pretest {
+            if let Some(ray) = ray {
                 mask &= self.groups[g].candidates(ray);
             }
             std::iter::from_fn(move || {
@@ -395,6 +392,14 @@ impl FastBvh {
             })
         })
     }
+}
+
+/// The ray of the single-precision pre-test, for a mesh searched with the watertight
+/// test; `None` for the course's Moller-Trumbore test, whose own rounding the
+/// pre-test's margin does not cover, so that all its triangles get the exact test.
+/// Decided once per ray.
+fn pretest_ray(mesh: &Mesh, sheared: &ShearedRay) -> Option<GroupRay> {
+    (mesh.triangle_test == TriangleTest::Watertight).then(|| GroupRay::new(sheared))
 }
 
 /// The binary nodes `slots` with inner ones replaced by their children, the

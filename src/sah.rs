@@ -65,7 +65,7 @@ impl Bvh {
             let centre_bounds = items
                 .iter()
                 .fold(Aabb::EMPTY, |b, &t| b.grow(centroids[t as usize]));
-            let leaf_cost = count.div_ceil(block as u32) as Real;
+            let leaf_cost = blocks(items.len(), block);
             let left = match best_split(items, &boxes, &centroids, &centre_bounds, block) {
                 Some(split)
                     if TRAVERSAL_COST + split.cost / bounds.half_area() < leaf_cost
@@ -117,6 +117,11 @@ fn bin_of(c: Real, low: Real, extent: Real) -> usize {
     (((c - low) / extent * BINS as Real) as usize).min(BINS - 1)
 }
 
+/// The cost of testing `count` triangles `block` at a time: `ceil(count / block)`.
+fn blocks(count: usize, block: usize) -> Real {
+    count.div_ceil(block) as Real
+}
+
 /// The cheapest of the `3 (BINS - 1)` candidate splits of `items`, with its cost
 /// `A_left N_left + A_right N_right` (`N` in blocks of `block` triangles); `None`
 /// when every centroid is the same point.
@@ -152,12 +157,12 @@ fn best_split(
         for k in (1..BINS).rev() {
             right = merge(right, bins[k]);
             if right.count > 0 {
-                right_cost[k] = right.bounds.half_area() * right.count.div_ceil(block) as Real;
+                right_cost[k] = right.bounds.half_area() * blocks(right.count, block);
             }
         }
         let mut left = bins[0];
         for k in 1..BINS {
-            let cost = left.bounds.half_area() * left.count.div_ceil(block) as Real + right_cost[k];
+            let cost = left.bounds.half_area() * blocks(left.count, block) + right_cost[k];
             if left.count > 0 && best.as_ref().is_none_or(|b| cost < b.cost) {
                 best = Some(Split { axis, bin: k, cost });
             }
