@@ -28,123 +28,32 @@
 #[cfg(not(feature = "s1"))]
 compile_error!("raycourse needs at least the first session: enable feature s1 (or a later one)");
 
+#[cfg(feature = "s6")]
+pub mod acceleration;
+pub mod camera;
+pub mod geometry;
+pub mod integrator;
+pub mod lights;
+pub mod materials;
+pub mod maths;
 #[cfg(feature = "s5")]
-mod aabb;
-#[cfg(feature = "s7")]
-mod aim;
-#[cfg(feature = "s6")]
-mod bvh;
-mod camera;
-mod convergence;
-mod error;
-#[cfg(feature = "s6")]
-mod fast_bvh;
-mod features;
-mod film;
-#[cfg(feature = "s3")]
-mod frame;
-#[cfg(feature = "s4")]
-mod fresnel;
-mod hit;
-#[cfg(feature = "s3")]
-mod indirect;
-#[cfg(feature = "s4")]
-mod lens;
-mod light;
-mod material;
-mod math;
-#[cfg(feature = "s5")]
-mod mesh;
-#[cfg(feature = "s5")]
-mod mesh_file;
-#[cfg(feature = "s2")]
-mod optics;
-mod plot;
-mod png;
-mod radiance;
-mod ray;
-#[cfg(feature = "s6")]
-mod rayset;
-mod reference;
-mod render;
-mod rng;
-#[cfg(feature = "s6")]
-mod sah;
-#[cfg(feature = "s3")]
-mod sampling;
-mod scale;
-mod scene;
-mod scene_file;
-#[cfg(feature = "s6")]
-mod smooth;
-mod sphere;
-#[cfg(feature = "s4")]
-mod sphere_light;
-mod stages;
-mod termination;
-#[cfg(feature = "s7")]
-mod texture;
-#[cfg(feature = "s5")]
-mod triangle;
-#[cfg(feature = "s6")]
-mod triangle_group;
-mod values;
-mod variant;
-#[cfg(feature = "s5")]
-mod watertight;
+pub mod meshes;
+pub mod render;
+pub mod scene;
+pub mod scene_file;
+pub mod studies;
 
-#[cfg(feature = "s5")]
-pub use aabb::*;
-#[cfg(feature = "s7")]
-pub use aim::*;
 #[cfg(feature = "s6")]
-pub use bvh::*;
+pub use acceleration::*;
 pub use camera::*;
-pub use convergence::*;
-pub use error::*;
-#[cfg(feature = "s6")]
-pub use fast_bvh::*;
-pub use features::*;
-pub use film::*;
-#[cfg(feature = "s3")]
-pub use frame::*;
-#[cfg(feature = "s4")]
-pub use fresnel::*;
-pub use hit::*;
-#[cfg(feature = "s4")]
-pub use lens::*;
-pub use light::*;
-pub use material::*;
-pub use math::*;
+pub use geometry::*;
+pub use integrator::*;
+pub use lights::*;
+pub use materials::*;
+pub use maths::*;
 #[cfg(feature = "s5")]
-pub use mesh::*;
-#[cfg(feature = "s5")]
-pub use mesh_file::*;
-#[cfg(feature = "s2")]
-pub use optics::*;
-pub use plot::*;
-pub use png::*;
-pub use radiance::*;
-pub use ray::*;
-#[cfg(feature = "s6")]
-pub use rayset::*;
-pub use reference::*;
+pub use meshes::*;
 pub use render::*;
-pub use rng::*;
-#[cfg(feature = "s3")]
-pub use sampling::*;
 pub use scene::*;
 pub use scene_file::*;
-pub use sphere::*;
-#[cfg(feature = "s4")]
-pub use sphere_light::*;
-pub use stages::*;
-pub use termination::*;
-#[cfg(feature = "s7")]
-pub use texture::*;
-#[cfg(feature = "s5")]
-pub use triangle::*;
-pub use values::*;
-pub use variant::*;
-#[cfg(feature = "s5")]
-pub use watertight::*;
+pub use studies::*;

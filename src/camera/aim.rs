@@ -1,0 +1,64 @@
+//! Aiming the camera: a frame built from where it is, what it looks at and which way
+//! is up.
+
+use crate::camera::pinhole::Orientation;
+use crate::maths::numbers::{Quat, Real, Vec3};
+
+// ANCHOR: aim
+/// The eye position and orientation of a camera at `eye` looking at `target`, with
+/// `up` giving the vertical, after raising the eye by `plunge` degrees around the
+/// target (it keeps its distance and keeps looking at the target). The frame:
+/// `forward = normalize(target - eye)`, `right = normalize(forward x up)`,
+/// `up' = right x forward`, and camera-space `z` is `back = -forward`. `None` if
+/// the camera looks along `up` or at its own position.
+pub fn aim(eye: Vec3, target: Vec3, up: Vec3, plunge: Real) -> Option<(Vec3, Orientation)> {
+    let offset = eye - target;
+    let axis = offset.cross(up).try_normalize()?;
+    let raised = Quat::from_axis_angle(axis, plunge.to_radians()) * offset;
+    let forward = (-raised).try_normalize()?;
+    let right = forward.cross(up).try_normalize()?;
+    let orientation = Orientation::Aimed {
+        right,
+        up: right.cross(forward),
+        back: -forward,
+    };
+    Some((target + raised, orientation))
+}
+// ANCHOR_END: aim
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unplunged_aim_down_minus_z_is_the_fixed_camera() {
+        let (eye, o) = aim(Vec3::new(0.0, 0.0, 55.0), Vec3::ZERO, Vec3::Y, 0.0).unwrap();
+        assert_eq!(eye, Vec3::new(0.0, 0.0, 55.0));
+        let v = Vec3::new(0.3, -0.2, -1.0);
+        assert!((o.to_world(v) - v).length() < 4.0 * Real::EPSILON);
+    }
+
+    #[test]
+    fn plunging_raises_the_eye_and_looks_at_the_target() {
+        let target = Vec3::new(1.0, 2.0, 3.0);
+        let (eye, o) = aim(target + Vec3::new(0.0, 0.0, 50.0), target, Vec3::Y, 30.0).unwrap();
+        assert!(
+            ((eye - target).length() - 50.0).abs() < 1e-12,
+            "same distance"
+        );
+        assert!(
+            (eye.y - target.y - 25.0).abs() < 1e-12,
+            "raised by 50 sin 30"
+        );
+        let centre_ray = o.to_world(-Vec3::Z);
+        assert!((centre_ray - (target - eye).normalize()).length() < 1e-15);
+        let up = o.to_world(Vec3::Y);
+        assert!(up.y > 0.0 && up.dot(centre_ray).abs() < 1e-15);
+    }
+
+    #[test]
+    fn looking_along_up_is_refused() {
+        assert!(aim(Vec3::Y, Vec3::ZERO, Vec3::Y, 0.0).is_none());
+        assert!(aim(Vec3::ZERO, Vec3::ZERO, Vec3::Y, 0.0).is_none());
+    }
+}

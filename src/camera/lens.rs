@@ -1,0 +1,83 @@
+//! The thin lens: depth of field from an aperture of finite size.
+
+use crate::maths::numbers::{PI, Real, Vec3};
+use crate::maths::random::{PixelRng, uniform};
+
+// ANCHOR: disk
+/// A point of the unit disk, uniformly distributed, from two uniform numbers in
+/// `[0, 1)`: Shirley and Chiu's concentric map, which sends squares around the
+/// centre of `[-1, 1]^2` to circles and so keeps neighbouring samples neighbours.
+pub fn sample_disk(u1: Real, u2: Real) -> (Real, Real) {
+    let (a, b) = (2.0 * u1 - 1.0, 2.0 * u2 - 1.0);
+    if a == 0.0 && b == 0.0 {
+        return (0.0, 0.0);
+    }
+    let (r, phi) = if a.abs() > b.abs() {
+        (a, PI / 4.0 * (b / a))
+    } else {
+        (b, PI / 2.0 - PI / 4.0 * (a / b))
+    };
+    (r * phi.cos(), r * phi.sin())
+}
+
+/// Density of [`sample_disk`] per unit area: `1 / pi` inside the unit disk.
+pub fn disk_pdf(x: Real, y: Real) -> Real {
+    if x * x + y * y <= 1.0 { 1.0 / PI } else { 0.0 }
+}
+// ANCHOR_END: disk
+
+/// A thin lens of radius `aperture` focused at distance `focus` in front of the eye.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ThinLens {
+    /// Radius of the lens opening; 0 would be a pinhole.
+    pub aperture: Real,
+    /// Distance from the eye to the plane that is sharp.
+    pub focus: Real,
+}
+
+impl ThinLens {
+    // ANCHOR: thin_lens
+    /// The start and direction, in camera space (eye at the origin, looking down
+    /// `-z`), of the ray through the lens for the pinhole direction `direction`: the
+    /// pinhole ray meets the focus plane `z = -focus` at a point every ray through
+    /// the lens passes through, so that plane is sharp; the ray starts at a random
+    /// point of the aperture disk.
+    pub fn ray(&self, direction: Vec3, rng: &mut PixelRng) -> (Vec3, Vec3) {
+        let focus_point = direction * (self.focus / -direction.z);
+        let (x, y) = sample_disk(uniform(rng), uniform(rng));
+        let origin = Vec3::new(x, y, 0.0) * self.aperture;
+        (origin, focus_point - origin)
+    }
+    // ANCHOR_END: thin_lens
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::maths::random::pixel_rng;
+
+    #[test]
+    fn disk_samples_stay_in_the_disk() {
+        for (u1, u2) in [(0.0, 0.0), (0.999, 0.5), (0.5, 0.5), (0.25, 0.999)] {
+            let (x, y) = sample_disk(u1, u2);
+            assert!(x * x + y * y <= 1.0 + 1e-15);
+        }
+    }
+
+    #[test]
+    fn every_lens_ray_passes_through_the_focus_point() {
+        let lens = ThinLens {
+            aperture: 2.0,
+            focus: 55.0,
+        };
+        let direction = Vec3::new(3.0, -2.0, -10.0);
+        let target = direction * 5.5;
+        let mut rng = pixel_rng(3, 4);
+        for _ in 0..100 {
+            let (origin, through) = lens.ray(direction, &mut rng);
+            assert!(origin.length() <= 2.0 && origin.z == 0.0);
+            let t = (target.z - origin.z) / through.z;
+            assert!((origin + t * through - target).length() < 1e-12);
+        }
+    }
+}

@@ -1,0 +1,222 @@
+//! Spheres: the only shape of the first four sessions. The room's walls are
+//! spheres too, so large that they look flat.
+
+use crate::geometry::hit::Hit;
+use crate::geometry::ray::Ray;
+use crate::materials::material::Material;
+use crate::maths::numbers::{Colour, Real, Vec3, error_bound};
+
+/// A sphere of centre `centre`, radius `radius`, made of `material`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    /// Centre of the sphere.
+    pub centre: Vec3,
+    /// Radius, positive.
+    pub radius: Real,
+    /// What its surface is made of: how it reflects light.
+    pub material: Material,
+    /// Radiance the surface emits by itself, in every direction (zero for most
+    /// objects): the white disk of figure 1 glows, and so will session 4's light.
+    pub emission: Colour,
+}
+
+impl Sphere {
+    // ANCHOR: intersect
+    /// The smallest `t > 0` at which `ray` meets the sphere, if any.
+    ///
+    /// With `f = o - c` and a unit direction `d`, the points `|o + t d - c|^2 = r^2`
+    /// solve `t^2 + 2 (f.d) t + (|f|^2 - r^2) = 0`. The textbook discriminant
+    /// `(f.d)^2 - (|f|^2 - r^2)` subtracts two large, nearly equal numbers for a small
+    /// or distant sphere; Ray Tracing Gems, chapter 7, computes the same quantity as
+    /// `r^2 - |f - (f.d) d|^2`, the squared half-chord, without that cancellation.
+    /// The roots then come from `q = -(f.d + sign(f.d) sqrt(disc))` as `c / q` and `q`,
+    /// so the smaller one is not computed as a difference of nearly equal numbers either.
+    #[inline]
+    pub fn intersect(&self, ray: &Ray) -> Option<Real> {
+        let f = ray.origin - self.centre;
+        let h = f.dot(ray.direction);
+        let c = f.length_squared() - self.radius * self.radius;
+        if c > 0.0 && h > 0.0 {
+            return None; // outside, and moving away
+        }
+        let chord = f - h * ray.direction;
+        let discriminant = self.radius * self.radius - chord.length_squared();
+        if discriminant < 0.0 {
+            return None;
+        }
+        let q = -(h + discriminant.sqrt().copysign(h));
+        if q == 0.0 {
+            return None;
+        }
+        let (t0, t1) = (c / q, q);
+        let (near, far) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
+        if near > 0.0 {
+            Some(near)
+        } else if far > 0.0 {
+            Some(far)
+        } else {
+            None
+        }
+    }
+    // ANCHOR_END: intersect
+
+    /// The hit record at distance `t` along `ray`, for the sphere numbered `object`
+    /// in the scene. The point is projected back onto
+    /// the sphere, `c + r (p - c) / |p - c|`, so that its error depends on the size
+    /// and position of the sphere only, not on how far the ray travelled.
+    pub fn hit_at(&self, ray: &Ray, t: Real, object: usize) -> Hit {
+        let radial = ray.at(t) - self.centre;
+        let normal = radial / radial.length();
+        let point = self.centre + self.radius * normal;
+        Hit {
+            t,
+            point,
+            normal,
+            shading_normal: normal,
+            error: error_bound(7) * (self.centre.abs() + (self.radius * normal).abs()),
+            material: self.material,
+            emission: self.emission,
+            object,
+            from_outside: (ray.origin - self.centre).length_squared() > self.radius * self.radius,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sphere(centre: Vec3, radius: Real) -> Sphere {
+        Sphere {
+            centre,
+            radius,
+            material: Material::Diffuse {
+                albedo: Colour::ONE,
+            },
+            emission: Colour::ZERO,
+        }
+    }
+
+    fn close(a: Real, b: Real, tolerance: Real) -> bool {
+        (a - b).abs() <= tolerance * b.abs().max(1.0)
+    }
+
+    #[test]
+    fn ray_from_outside_hits_the_near_side() {
+        let s = sphere(Vec3::ZERO, 10.0);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, 55.0), -Vec3::Z);
+        assert_eq!(s.intersect(&ray), Some(45.0));
+    }
+
+    #[test]
+    fn ray_from_inside_hits_the_far_side() {
+        let s = sphere(Vec3::ZERO, 10.0);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, 3.0), -Vec3::Z);
+        assert_eq!(s.intersect(&ray), Some(13.0));
+    }
+
+    #[test]
+    fn sphere_behind_the_ray_is_missed() {
+        let s = sphere(Vec3::ZERO, 10.0);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, 55.0), Vec3::Z);
+        assert_eq!(s.intersect(&ray), None);
+    }
+
+    /// Offsets of 1e-9 and 1e-6 at 10 are below single precision's resolution:
+    /// tests/extremes.rs compares the two precisions.
+    #[test]
+    #[cfg(not(feature = "f32"))]
+    fn tangent_and_near_tangent_rays() {
+        let s = sphere(Vec3::ZERO, 10.0);
+        let tangent = Ray::new(Vec3::new(10.0, 0.0, 55.0), -Vec3::Z);
+        assert!(close(s.intersect(&tangent).unwrap(), 55.0, 1e-12));
+        let outside = Ray::new(Vec3::new(10.0 + 1e-9, 0.0, 55.0), -Vec3::Z);
+        assert_eq!(s.intersect(&outside), None);
+        let inside = Ray::new(Vec3::new(10.0 - 1e-6, 0.0, 55.0), -Vec3::Z);
+        let t = s.intersect(&inside).unwrap();
+        let expected = 55.0 - (100.0 - (10.0 - 1e-6 as Real).powi(2)).sqrt();
+        assert!(close(t, expected, 1e-12), "{t} vs {expected}");
+    }
+
+    #[test]
+    fn oblique_ray_distance_matches_geometry() {
+        // From (0, 0, 55) towards (3, 4, 0): the chord's midpoint is the projection of
+        // the centre on the ray.
+        let s = sphere(Vec3::ZERO, 10.0);
+        let o = Vec3::new(0.0, 0.0, 55.0);
+        let ray = Ray::new(o, Vec3::new(3.0, 4.0, -55.0));
+        let t = s.intersect(&ray).unwrap();
+        let along = (-o).dot(ray.direction);
+        let miss2 = o.length_squared() - along * along;
+        let expected = along - (100.0 - miss2).sqrt();
+        assert!(close(t, expected, 256.0 * Real::EPSILON));
+        assert!(close(ray.at(t).length(), 10.0, 256.0 * Real::EPSILON));
+    }
+
+    #[test]
+    fn far_giant_spheres_are_hit_accurately() {
+        // Walls of radius 1e5 whose surface lies 10 units from the origin.
+        for axis in [Vec3::X, Vec3::Y, Vec3::Z, -Vec3::X] {
+            let s = sphere(axis * (1e5 + 10.0), 1e5);
+            let ray = Ray::new(Vec3::ZERO, axis);
+            let t = s.intersect(&ray).unwrap();
+            // Rounding the centre, about 1e5, moves the surface by a few ulps of 1e5.
+            let bound = 4.0 * Real::EPSILON * 1e5 / 10.0;
+            assert!(close(t, 10.0, bound), "t = {t}");
+            // From inside the giant sphere, the far side.
+            let from_inside = Ray::new(axis * 20.0, axis);
+            let t = s.intersect(&from_inside).unwrap();
+            assert!(close(t, 2e5 - 10.0, 64.0 * Real::EPSILON), "t = {t}");
+        }
+    }
+
+    #[test]
+    fn tiny_far_sphere_is_hit_where_the_textbook_formula_breaks() {
+        // A sphere of radius 1e-3 at 1e6: b^2 and c are about 1e12 and their
+        // difference 1e-6, below the rounding of either.
+        let s = sphere(Vec3::new(0.0, 0.0, -1e6), 1e-3);
+        let ray = Ray::new(Vec3::new(5e-4, 0.0, 0.0), -Vec3::Z);
+        let t = s
+            .intersect(&ray)
+            .expect("the ray passes through the sphere");
+        let expected = 1e6 - (1e-6 - 25e-8 as Real).sqrt();
+        assert!(close(t, expected, 1e-12), "t = {t}, expected {expected}");
+    }
+
+    #[test]
+    fn hit_point_lies_on_the_sphere_within_its_error_bound() {
+        let s = sphere(Vec3::new(3.0, -1000.0, 7.0), 990.0);
+        let ray = Ray::new(Vec3::new(0.0, 0.0, 55.0), Vec3::new(0.3, -1.0, -0.8));
+        let hit = s.hit_at(&ray, s.intersect(&ray).unwrap(), 0);
+        let off = ((hit.point - s.centre).length() - s.radius).abs();
+        assert!(off <= hit.error.length(), "{off} > {}", hit.error.length());
+        assert!((hit.normal.length() - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn spawned_rays_never_hit_their_own_sphere() {
+        // Rays leaving a convex sphere outwards must miss it; rays entering it must
+        // find the far side, not the point they left.
+        let s = sphere(Vec3::new(0.0, -1000.0, 0.0), 990.0);
+        let mut self_hits = 0;
+        for k in 0..2000 {
+            let a = k as Real * 0.37;
+            let target = Vec3::new(40.0 * a.cos(), 0.0, 40.0 * a.sin());
+            let ray = Ray::new(
+                Vec3::new(0.0, 30.0, 20.0),
+                target - Vec3::new(0.0, 30.0, 20.0),
+            );
+            let Some(t) = s.intersect(&ray) else { continue };
+            let hit = s.hit_at(&ray, t, 0);
+            let reflected = hit.spawn(Vec3::new(a.sin(), 1.0, a.cos()).normalize());
+            if s.intersect(&reflected).is_some() {
+                self_hits += 1;
+            }
+            let inward = hit.spawn((-hit.normal + Vec3::new(0.1 * a.cos(), 0.0, 0.1)).normalize());
+            if s.intersect(&inward).is_some_and(|t| t < 1.0) {
+                self_hits += 1;
+            }
+        }
+        assert_eq!(self_hits, 0);
+    }
+}

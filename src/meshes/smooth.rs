@@ -1,0 +1,28 @@
+//! Smooth shading: normals interpolated across triangles.
+
+use crate::maths::numbers::{Real, Vec3};
+use crate::meshes::mesh::Mesh;
+
+impl Mesh {
+    // ANCHOR: smooth_normal
+    /// The shading normal `alpha N_A + beta N_B + gamma N_C`, normalised, for the
+    /// barycentric `weights` of a point of `triangle`: the vertex normals of the
+    /// model, blended so that light varies smoothly across triangle edges. Falls
+    /// back to the `geometric` normal if the mesh has no normals or they cancel, and
+    /// is turned to the geometric normal's side.
+    pub fn smooth_normal(&self, triangle: u32, weights: [Real; 3], geometric: Vec3) -> Vec3 {
+        if self.normals.is_empty() {
+            return geometric;
+        }
+        let corners = self.triangles[triangle as usize];
+        let blended: Vec3 = (0..3)
+            .map(|k| weights[k] * self.normals[corners[k] as usize])
+            .sum();
+        match blended.try_normalize() {
+            Some(n) if n.dot(geometric) < 0.0 => -n,
+            Some(n) => n,
+            None => geometric,
+        }
+    }
+    // ANCHOR_END: smooth_normal
+}
