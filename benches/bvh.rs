@@ -5,9 +5,10 @@ use std::hint::black_box;
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use raycourse::{
-    Bvh, Mat3, Mesh, Placement, Ray, Real, Search, Vec3, pixel_rng, read_obj, uniform,
-};
+use raycourse::acceleration::Bvh;
+use raycourse::geometry::Ray;
+use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, uniform};
+use raycourse::meshes::{Mesh, Placement, read_obj};
 
 fn ogre() -> Mesh {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/ogre/ogre.obj");
@@ -40,7 +41,7 @@ fn bvh(c: &mut Criterion) {
         b.iter(|| Bvh::build(black_box(&mesh)))
     });
     let rays = rays(&mesh, 10_000);
-    mesh.search = Search::Bvh(Bvh::build(&mesh));
+    mesh.search = std::sync::Arc::new(Bvh::build(&mesh));
     c.bench_function("closest hit, 10k rays, ogre, bvh", |b| {
         b.iter(|| {
             rays.iter()

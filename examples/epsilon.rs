@@ -9,9 +9,13 @@
 
 use std::path::PathBuf;
 
-use raycourse::{
-    Colour, Hit, Light, Material, Overrides, Ray, Real, Scene, Vec3, display, find_stage,
-};
+use raycourse::geometry::{Hit, Ray};
+use raycourse::lights::Light;
+use raycourse::materials::Material;
+use raycourse::maths::{Colour, Real, Vec3};
+use raycourse::render::film::display;
+use raycourse::studies::scale::scaled;
+use raycourse::{Overrides, Scene, find_stage, parse_scene};
 
 /// The fixed epsilon of the textbook renderer: right for a room 100 units wide.
 const EPSILON: Real = 1e-4;
@@ -25,7 +29,8 @@ const TILE: u32 = 200;
 /// How a shadow ray leaves the surface.
 #[derive(Clone, Copy)]
 enum Start {
-    /// `epsilon` along the ray, whatever the scene's size.
+    /// The course's way: `epsilon` along the normal, whatever the scene's size
+    /// ([`Hit::spawn_with_epsilon`]).
     FixedEpsilon,
     /// Beyond the hit point's error bound ([`Hit::spawn`]).
     Robust,
@@ -47,10 +52,9 @@ fn shade(scene: &Scene, row: u32, column: u32, start: Start) -> Colour {
     };
     let (shadow, distance) = match start {
         Start::FixedEpsilon => {
-            let to_light = light.position - hit.point;
-            let direction = to_light.normalize();
-            let origin = hit.point + EPSILON * direction;
-            (Ray::new(origin, direction), to_light.length() - EPSILON)
+            let direction = (light.position - hit.point).normalize();
+            let shadow = hit.spawn_with_epsilon(direction, EPSILON);
+            (shadow, shadow.origin.distance(light.position))
         }
         Start::Robust => hit.spawn_towards(light.position),
     };
@@ -73,13 +77,11 @@ fn main() {
         height: size,
         ..Overrides::default()
     };
-    let room = find_stage(2, "shadows")
-        .expect("session 2 is built")
-        .scene(&overrides)
-        .expect("the built-in scene loads");
+    let room = find_stage(2, "shadows").expect("session 2 is built");
     let mut figure = image::RgbImage::new(TILE * SCALES.len() as u32, 2 * TILE);
     for (k, &scale) in SCALES.iter().enumerate() {
-        let scene = room.scaled(scale, Vec3::splat(1e4));
+        let text = scaled(room.source, scale, Vec3::splat(1e4)).expect("the scene scales");
+        let scene = parse_scene(&text, &room.file(), &overrides).expect("the scene loads");
         for (r, start) in [Start::FixedEpsilon, Start::Robust].into_iter().enumerate() {
             for row in 0..TILE {
                 for column in 0..TILE {

@@ -2,7 +2,7 @@
 //!
 //! A ray tracer written to be read alongside a seven-session course on ray tracing:
 //! from a white disk on black to a path-traced, textured triangle mesh seen by a
-//! moving camera. Each module is one concept of the course.
+//! moving camera.
 //!
 //! ## Features
 //!
@@ -23,37 +23,64 @@
 //! A feature decides what code exists; a scene file decides what a render uses.
 //! Session 1 is the least a build can have: without `s1` the crate does not compile.
 
+//! ## The parts of a ray tracer, in the order they depend on each other
+//!
+//! | module | what it does | sessions |
+//! |---|---|---|
+//! | [`maths`] | number types, random numbers, sampling | 1, 3 |
+//! | [`geometry`] | rays, hit records, spheres, boxes, triangles | 1, 2, 5 |
+//! | [`materials`] | diffuse, mirror, glass, Fresnel glass, textures | 1, 2, 4, 7 |
+//! | [`camera`] | the pinhole, antialiasing, the thin lens, the aimed camera | 1, 3, 4, 7 |
+//! | [`lights`] | the point light, the sphere light | 1, 4 |
+//! | `meshes` | triangle meshes from OBJ files | 5, 6, 7 |
+//! | `acceleration` | the bounding box, the bounding volume hierarchy | 5, 6 |
+//! | [`scene`] | everything a render needs, and the nearest hit | 1, 2, 5 |
+//! | [`integrator`] | `radiance`: the light arriving along a ray | 1 to 4 |
+//! | [`render`] | every pixel, in parallel; the film; PNG files | 1, 3 |
+//! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
+//! | `studies` | error against samples and time, scale sweeps, ray sets | 3, 6 |
+//!
+//! A program starts with a [`Stage`] (or a scene file, [`load_scene`]), renders its
+//! [`Scene`] with [`render()`] and writes the [`Film`] with [`encode_png`]:
+//!
+//! ```
+//! let stage = raycourse::find_stage(1, "shading").unwrap();
+//! let scene = stage.scene(&raycourse::Overrides::default()).unwrap();
+//! let image = raycourse::render(&scene);
+//! let png = raycourse::encode_png(&image.film, scene.settings.gamma);
+//! assert!(png.starts_with(b"\x89PNG"));
+//! ```
+
 #![warn(missing_docs)]
 
 #[cfg(not(feature = "s1"))]
 compile_error!("raycourse needs at least the first session: enable feature s1 (or a later one)");
 
-#[cfg(feature = "s6")]
-pub mod acceleration;
-pub mod camera;
+pub mod maths;
+
 pub mod geometry;
-pub mod integrator;
+
+pub mod camera;
 pub mod lights;
 pub mod materials;
-pub mod maths;
+
 #[cfg(feature = "s5")]
 pub mod meshes;
-pub mod render;
+
+#[cfg(feature = "s5")]
+pub mod acceleration;
+
 pub mod scene;
+
+pub mod integrator;
+
+pub mod render;
+
 pub mod scene_file;
+
+#[cfg(feature = "s3")]
 pub mod studies;
 
-#[cfg(feature = "s6")]
-pub use acceleration::*;
-pub use camera::*;
-pub use geometry::*;
-pub use integrator::*;
-pub use lights::*;
-pub use materials::*;
-pub use maths::*;
-#[cfg(feature = "s5")]
-pub use meshes::*;
-pub use render::*;
-pub use scene::*;
-pub use scene_file::*;
-pub use studies::*;
+pub use render::{Film, Render, encode_png, render};
+pub use scene::Scene;
+pub use scene_file::{Overrides, SceneError, Stage, find_stage, load_scene, parse_scene, stages};

@@ -10,7 +10,7 @@ use std::ffi::OsStr;
 use std::path::Path;
 
 use common::{run, text};
-use raycourse::SESSION;
+use raycourse::scene_file::SESSION;
 
 struct Case {
     name: String,

@@ -7,7 +7,7 @@
 //! which must be rejected: a test that cannot fail proves nothing.
 #![cfg(all(feature = "s3", not(feature = "f32")))]
 
-use raycourse::{PI, PixelRng, Real, pixel_rng, uniform};
+use raycourse::maths::{PI, PixelRng, Real, pixel_rng, uniform};
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
 const SAMPLES: usize = 1_000_000;
@@ -87,7 +87,7 @@ fn hemisphere_coordinates(x: Real, y: Real, z: Real) -> (Real, Real) {
 
 mod cosine_hemisphere {
     use super::*;
-    use raycourse::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
+    use raycourse::maths::sampling::{cosine_hemisphere_pdf, sample_cosine_hemisphere};
 
     fn sample(rng: &mut PixelRng) -> (Real, Real) {
         let d = sample_cosine_hemisphere(uniform(rng), uniform(rng));
@@ -109,7 +109,7 @@ mod cosine_hemisphere {
 
 mod box_muller {
     use super::*;
-    use raycourse::{gaussian_pdf, sample_gaussian};
+    use raycourse::maths::sampling::{gaussian_pdf, sample_gaussian};
 
     const SIGMA: Real = 0.5;
 
@@ -148,7 +148,7 @@ mod box_muller {
 #[cfg(feature = "s4")]
 mod disk {
     use super::*;
-    use raycourse::{disk_pdf, sample_disk};
+    use raycourse::camera::lens::{disk_pdf, sample_disk};
 
     /// `u = r^2`, `v = phi / 2 pi`: an area `dA = r dr dphi = pi du dv`.
     fn sample(rng: &mut PixelRng) -> (Real, Real) {
@@ -180,7 +180,9 @@ mod disk {
 #[cfg(feature = "s4")]
 mod light_cone {
     use super::*;
-    use raycourse::{Cone, Frame, SphereLight, Vec3};
+    use raycourse::lights::{Cone, SphereLight};
+    use raycourse::maths::Vec3;
+    use raycourse::maths::frame::Frame;
 
     /// A light close to the shaded point, so the cone is wide (half-angle 42 degrees).
     fn light() -> SphereLight {

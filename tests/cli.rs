@@ -31,7 +31,7 @@ fn list_shows_exactly_the_stages_of_this_build() {
 #[test]
 fn session_one_has_its_three_stages() {
     assert_eq!(
-        raycourse::stage_names(1),
+        raycourse::scene_file::stage_names(1),
         ["white-disk", "shading", "spheres"]
     );
 }
@@ -40,7 +40,7 @@ fn session_one_has_its_three_stages() {
 #[test]
 fn session_two_has_its_four_stages() {
     assert_eq!(
-        raycourse::stage_names(2),
+        raycourse::scene_file::stage_names(2),
         ["gamma", "shadows", "mirror", "glass"]
     );
 }

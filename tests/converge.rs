@@ -1,18 +1,18 @@
 //! `raycourse converge` and `raycourse plot`: the error of Monte Carlo renders
-//! against a reference, measured as a student runs it.
+//! against a reference, measured as a student runs it. Both arrive with session 3,
+//! when rendering becomes a trade between time and noise.
+#![cfg(feature = "s3")]
 
 mod common;
 
-#[cfg(feature = "s3")]
 use std::path::Path;
 
 use common::{run, text};
-#[cfg(feature = "s3")]
-use raycourse::{Real, fitted_slope};
-use raycourse::{Rung, read_rungs};
+use raycourse::maths::Real;
+use raycourse::studies::convergence::fitted_slope;
+use raycourse::studies::convergence::{Rung, read_rungs};
 
 /// Runs a study in `dir` and returns its rows.
-#[cfg(feature = "s3")]
 fn study(dir: &Path, args: &[&str]) -> Vec<Rung> {
     let mut all = vec!["converge", "-q", "--out", "study"];
     all.extend(args);
@@ -26,7 +26,6 @@ fn rows<'r>(rungs: &'r [Rung], variant: &str) -> Vec<&'r Rung> {
     rungs.iter().filter(|r| r.variant == variant).collect()
 }
 
-#[cfg(feature = "s3")]
 #[test]
 fn indirect_error_falls_as_one_over_root_n_and_the_reference_is_cached() {
     let dir = tempfile::tempdir().unwrap();

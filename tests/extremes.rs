@@ -4,7 +4,9 @@
 //! both precisions (`--features f32`); where single precision cannot meet a bound
 //! that double meets, the test asserts that it fails, and how.
 
-use raycourse::{Colour, Material, Ray, Real, Sphere, Vec3, pixel_rng, uniform};
+use raycourse::geometry::{Ray, Sphere};
+use raycourse::materials::Material;
+use raycourse::maths::{Colour, Real, Vec3, pixel_rng, uniform};
 
 /// Whether this build computes in double precision.
 const DOUBLE: bool = cfg!(not(feature = "f32"));
@@ -132,7 +134,7 @@ fn stable_sphere_hits_lie_on_the_surface_and_the_textbook_ones_do_not() {
 #[cfg(feature = "s2")]
 mod optics {
     use super::*;
-    use raycourse::refract;
+    use raycourse::materials::optics::refract;
 
     /// Whether rays `offset` radians either side of the critical angle of `index`
     /// refract (below) and are totally reflected (above), as they should.
@@ -171,7 +173,6 @@ mod optics {
 
     #[test]
     fn index_one_lets_rays_pass_straight() {
-        use indicatif::ProgressBar;
         use raycourse::{Overrides, find_stage, render};
         use std::num::NonZeroU32;
         let overrides = Overrides {
@@ -184,10 +185,7 @@ mod optics {
         glass.spheres[0].material = Material::Glass { index: 1.0 };
         let mut empty = glass.clone();
         empty.spheres.remove(0);
-        let (a, b) = (
-            render(&glass, &ProgressBar::hidden()).film,
-            render(&empty, &ProgressBar::hidden()).film,
-        );
+        let (a, b) = (render(&glass).film, render(&empty).film);
         let worst = a
             .pixels
             .iter()
@@ -247,7 +245,7 @@ mod grazing {
     #[cfg(feature = "s5")]
     #[test]
     fn grazing_rays_meet_a_triangle_where_they_should() {
-        use raycourse::{ShearedRay, intersect_triangle};
+        use raycourse::geometry::{ShearedRay, intersect_triangle};
         let (a, b, c) = (
             Vec3::new(-100.0, 0.0, -100.0),
             Vec3::new(100.0, 0.0, -100.0),
@@ -270,7 +268,7 @@ mod grazing {
     #[cfg(feature = "s5")]
     #[test]
     fn rays_in_the_faces_of_a_box_give_no_nan() {
-        use raycourse::Aabb;
+        use raycourse::geometry::Aabb;
         let unit = Aabb::EMPTY.grow(Vec3::ZERO).grow(Vec3::ONE);
         let entry = |origin: Vec3, direction: Vec3| {
             let ray = Ray::new(origin, direction);
@@ -316,7 +314,6 @@ mod grazing {
 #[cfg(feature = "s7")]
 #[test]
 fn degenerate_meshes_render_without_nan() {
-    use indicatif::ProgressBar;
     use raycourse::{Overrides, parse_scene, render};
 
     let dir = tempfile::tempdir().unwrap();
@@ -363,7 +360,7 @@ material = { diffuse = [0.8, 0.8, 0.8] }
 "#;
     let path = dir.path().join("scene.toml");
     let scene = parse_scene(scene_text, &path, &Overrides::default()).unwrap();
-    let result = render(&scene, &ProgressBar::hidden());
+    let result = render(&scene);
     assert!(result.film.pixels.iter().all(|p| p.is_finite()));
     assert_eq!(result.dropped, 0, "no sample was NaN or infinite");
     let lit = result

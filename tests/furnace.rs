@@ -4,10 +4,13 @@
 //! unbiasedness of Russian roulette, measured against a closed form.
 #![cfg(feature = "s2")]
 
-use raycourse::{
-    Camera, Colour, Lens, Material, Orientation, PixelFilter, Real, Scene, Settings, Sphere,
-    Termination, Tracer, Vec3, pixel_samples,
-};
+use raycourse::Scene;
+use raycourse::camera::Camera;
+use raycourse::geometry::Sphere;
+use raycourse::integrator::Tracer;
+use raycourse::materials::Material;
+use raycourse::maths::{Colour, Real, Vec3};
+use raycourse::scene::Settings;
 
 const SIZE: u32 = 24;
 
@@ -30,25 +33,19 @@ fn furnace(rho: Real, le: Real, object: Option<Material>, settings: Settings) ->
             emission: Colour::ZERO,
         });
     }
-    Scene {
-        camera: Camera {
-            position: Vec3::new(0.0, 0.0, 40.0),
-            fov: (40.0 as Real).to_radians(),
-            width: SIZE,
-            height: SIZE,
-            filter: PixelFilter::Centre,
-            lens: Lens::Pinhole,
-            orientation: Orientation::Fixed,
-        },
-        spheres,
-        #[cfg(feature = "s5")]
-        meshes: vec![],
-        light: None,
-        settings,
-    }
+    let camera = Camera::new(
+        Vec3::new(0.0, 0.0, 40.0),
+        (40.0 as Real).to_radians(),
+        SIZE,
+        SIZE,
+    );
+    Scene::new(camera, spheres, None, settings)
 }
 
-fn settings(bounces: u32, termination: Termination) -> Settings {
+/// Stop paths at the bounce limit.
+const LIMIT: Option<Real> = None;
+
+fn settings(bounces: u32, russian_roulette: Option<Real>) -> Settings {
     Settings {
         samples: 64,
         bounces,
@@ -57,21 +54,33 @@ fn settings(bounces: u32, termination: Termination) -> Settings {
         shadows: false,
         indirect: true,
         light_sampling: false,
-        termination,
+        russian_roulette,
     }
 }
 
-/// Every sample's radiance (red channel; the scenes are grey), pixel by pixel.
+/// The radiance of every sample of pixel (`row`, `column`), red channel (the
+/// scenes are grey).
+#[cfg(feature = "s3")]
+fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Vec<Real> {
+    raycourse::render::samples::pixel_samples(tracer, row, column)
+        .map(|c| c.x)
+        .collect()
+}
+
+/// The radiance of the one sample of pixel (`row`, `column`) before session 3, red
+/// channel.
+#[cfg(not(feature = "s3"))]
+fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Vec<Real> {
+    vec![raycourse::render::pixel::pixel(tracer, row, column).x]
+}
+
+/// Every sample's radiance, pixel by pixel.
 fn samples(scene: &Scene) -> Vec<Vec<Real>> {
     let mut tracer = Tracer::new(scene);
     let mut pixels = Vec::new();
     for row in 0..SIZE {
         for column in 0..SIZE {
-            pixels.push(
-                pixel_samples(&mut tracer, row, column)
-                    .map(|c| c.x)
-                    .collect(),
-            );
+            pixels.push(pixel(&mut tracer, row, column));
         }
     }
     pixels
@@ -103,21 +112,13 @@ fn a_white_diffuse_sphere_vanishes() {
     let white = Material::Diffuse {
         albedo: Colour::ONE,
     };
-    every_pixel_sees(
-        &furnace(0.0, 1.0, Some(white), settings(5, Termination::BounceLimit)),
-        1.0,
-    );
+    every_pixel_sees(&furnace(0.0, 1.0, Some(white), settings(5, LIMIT)), 1.0);
 }
 
 #[test]
 fn a_mirror_sphere_vanishes() {
     every_pixel_sees(
-        &furnace(
-            0.0,
-            1.0,
-            Some(Material::Mirror),
-            settings(5, Termination::BounceLimit),
-        ),
+        &furnace(0.0, 1.0, Some(Material::Mirror), settings(5, LIMIT)),
         1.0,
     );
 }
@@ -126,15 +127,7 @@ fn a_mirror_sphere_vanishes() {
 #[test]
 fn a_fresnel_glass_sphere_vanishes() {
     let glass = Material::FresnelGlass { index: 1.5 };
-    every_pixel_sees(
-        &furnace(
-            0.0,
-            1.0,
-            Some(glass),
-            settings(64, Termination::BounceLimit),
-        ),
-        1.0,
-    );
+    every_pixel_sees(&furnace(0.0, 1.0, Some(glass), settings(64, LIMIT)), 1.0);
 }
 
 #[cfg(feature = "s3")]
@@ -142,7 +135,7 @@ fn a_fresnel_glass_sphere_vanishes() {
 fn the_bounce_limit_biases_a_grey_enclosure_low() {
     // L = Le + rho L has the solution Le / (1 - rho) = 2 for rho = 1/2. Stopping
     // after 2 bounces keeps Le (1 + rho + rho^2) = 1.75, with no noise at all.
-    let scene = furnace(0.5, 1.0, None, settings(2, Termination::BounceLimit));
+    let scene = furnace(0.5, 1.0, None, settings(2, LIMIT));
     for values in samples(&scene) {
         assert!(values.iter().all(|&v| v == 1.75), "{values:?}");
     }
@@ -151,12 +144,7 @@ fn the_bounce_limit_biases_a_grey_enclosure_low() {
 #[cfg(feature = "s4")]
 #[test]
 fn russian_roulette_removes_the_bias() {
-    let scene = furnace(
-        0.5,
-        1.0,
-        None,
-        settings(2, Termination::RussianRoulette { survival: 0.6 }),
-    );
+    let scene = furnace(0.5, 1.0, None, settings(2, Some(0.6)));
     let all: Vec<Real> = samples(&scene).into_iter().flatten().collect();
     let (mean, error) = mean_and_error(&all);
     assert!((mean - 2.0).abs() <= 3.0 * error, "{mean} +- {error}");

@@ -86,7 +86,7 @@ proptest! {
 #[cfg(feature = "s5")]
 mod obj {
     use super::*;
-    use raycourse::read_obj;
+    use raycourse::meshes::read_obj;
 
     const OBJ: &str = "mtllib none.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\n\
                        vt 0 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf 2/2/1 4/1/1 3/3/1\n\

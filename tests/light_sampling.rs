@@ -7,7 +7,10 @@
 
 use std::num::NonZeroU32;
 
-use raycourse::{Overrides, Real, Scene, Tracer, find_stage, pixel_samples};
+use raycourse::integrator::Tracer;
+use raycourse::maths::Real;
+use raycourse::render::samples::pixel_samples;
+use raycourse::{Overrides, Scene, find_stage};
 
 const SIZE: u32 = 64;
 /// A 6 x 6 patch of the floor, right of the sphere, lit by the light.

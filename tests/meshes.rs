@@ -5,10 +5,12 @@
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
-use raycourse::{
-    Mat3, Mesh, MeshHit, ObjData, Overrides, Placement, Ray, Real, Search, Vec3, parse_scene,
-    pixel_rng, read_obj, uniform,
-};
+use raycourse::geometry::Ray;
+use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, uniform};
+use raycourse::{Overrides, parse_scene};
+use std::sync::Arc;
+
+use raycourse::meshes::{Mesh, MeshHit, ObjData, Placement, read_obj};
 use rayon::prelude::*;
 
 fn asset(path: &str) -> PathBuf {
@@ -72,7 +74,7 @@ fn rays_at(mesh: &Mesh, count: u64) -> Vec<Ray> {
             let mut rng = pixel_rng(99, i);
             let mut u = || uniform(&mut rng);
             let z: Real = 2.0 * u() - 1.0;
-            let phi = 2.0 * raycourse::PI * u();
+            let phi = 2.0 * raycourse::maths::PI * u();
             let r = (1.0 - z * z).sqrt();
             let direction = Vec3::new(r * phi.cos(), r * phi.sin(), z);
             if i % 5 == 4 {
@@ -108,23 +110,23 @@ fn searches_agree(obj: &str, count: u64) {
         hit_count as u64 > count / 4,
         "{hit_count} rays hit: the test is not vacuous"
     );
-    mesh.search = Search::BoundingBox;
+    mesh.search = Arc::new(raycourse::acceleration::BoundingBox);
     assert!(
         hits(&mesh, &rays) == brute,
         "bounding box differs from brute force"
     );
     #[cfg(feature = "s6")]
     {
-        mesh.search = Search::Bvh(raycourse::Bvh::build(&mesh));
+        mesh.search = Arc::new(raycourse::acceleration::Bvh::build(&mesh));
         let bvh = hits(&mesh, &rays);
         let differing = bvh.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "BVH differs from brute force");
-        mesh.search = Search::Bvh(raycourse::Bvh::build_sah(&mesh, 8, 1));
+        mesh.search = Arc::new(raycourse::acceleration::Bvh::build_sah(&mesh, 8, 1));
         let sah = hits(&mesh, &rays);
         let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "SAH BVH differs from brute force");
         for leaf in [1, 4, 8, 16] {
-            mesh.search = Search::FastBvh(raycourse::FastBvh::build(&mesh, leaf));
+            mesh.search = Arc::new(raycourse::acceleration::FastBvh::build(&mesh, leaf));
             let fast = hits(&mesh, &rays);
             let differing = fast.iter().zip(&brute).filter(|(a, b)| a != b).count();
             assert_eq!(
@@ -161,14 +163,14 @@ fn searches_agree_on_the_ogre() {
 fn the_fast_bvh_agrees_with_the_course_triangle_test() {
     let data = read_obj(&asset("spot/spot.obj")).unwrap();
     let mut mesh = unplaced(&data);
-    mesh.triangle_test = raycourse::TriangleTest::MollerTrumbore;
+    mesh.triangle_test = raycourse::geometry::TriangleTest::MollerTrumbore;
     let rays = rays_at(&mesh, 10_000);
     let brute = hits(&mesh, &rays);
     assert!(
         brute.iter().flatten().count() > 2_500,
         "the test is not vacuous"
     );
-    mesh.search = Search::FastBvh(raycourse::FastBvh::build(&mesh, 8));
+    mesh.search = Arc::new(raycourse::acceleration::FastBvh::build(&mesh, 8));
     assert!(
         hits(&mesh, &rays) == brute,
         "fast BVH differs from brute force"
@@ -258,12 +260,12 @@ fn textures_need_session_seven() {
 fn missing_normals_fall_back_to_the_geometric_normal() {
     let data = read_obj_text(TRIANGLE);
     assert!(data.normals.is_empty());
-    let mut mesh = unplaced(&data);
-    mesh.shading = raycourse::Shading::Smooth;
+    let mesh = unplaced(&data);
     let ray = Ray::new(Vec3::new(0.2, 0.2, 1.0), -Vec3::Z);
     let hit = mesh.intersect(&ray, Real::INFINITY).unwrap();
+    let weights = [1.0 / 3.0; 3];
+    assert_eq!(mesh.smooth_normal(hit.triangle, weights, Vec3::Z), Vec3::Z);
     let record = mesh.hit_record(&ray, hit, 0);
-    assert_eq!(record.shading_normal, record.normal);
     assert_eq!(record.normal, Vec3::Z);
 }
 
@@ -279,7 +281,6 @@ fn read_obj_text(text: &[u8]) -> ObjData {
 /// small settings: the searches differ only in time, so the bytes are equal.
 #[test]
 fn mesh_stages_render_the_same_bytes_whatever_the_search() {
-    use indicatif::ProgressBar;
     use raycourse::{encode_png, find_stage, render};
     use std::num::NonZeroU32;
 
@@ -294,10 +295,7 @@ fn mesh_stages_render_the_same_bytes_whatever_the_search() {
             .unwrap()
             .scene(&overrides)
             .unwrap();
-        encode_png(
-            &render(&scene, &ProgressBar::hidden()).film,
-            scene.settings.gamma,
-        )
+        encode_png(&render(&scene).film, scene.settings.gamma)
     };
     let brute = png(5, "mesh");
     assert_eq!(png(5, "mesh-bbox"), brute, "bounding box");
@@ -311,14 +309,10 @@ fn mesh_stages_render_the_same_bytes_whatever_the_search() {
             .replace("acceleration = \"bvh\"", "acceleration = \"fast\"");
         let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(stage.path);
         let fast = parse_scene(&text, &path, &overrides).unwrap();
-        assert!(matches!(fast.meshes[0].search, Search::FastBvh(_)));
+        assert_eq!(fast.meshes[0].search.name(), "fast");
         let bvh = stage.scene(&overrides).unwrap();
-        let image = |scene: &raycourse::Scene| {
-            encode_png(
-                &render(scene, &ProgressBar::hidden()).film,
-                scene.settings.gamma,
-            )
-        };
+        let image =
+            |scene: &raycourse::Scene| encode_png(&render(scene).film, scene.settings.gamma);
         assert_eq!(image(&fast), image(&bvh), "fast BVH");
     }
 }
@@ -337,6 +331,65 @@ fn a_mesh_without_texture_coordinates_is_not_textured() {
     let scene = parse_scene(text, &dir.path().join("scene.toml"), &Overrides::default()).unwrap();
     assert_eq!(
         scene.meshes[0].albedo,
-        raycourse::MeshAlbedo::Constant(raycourse::Colour::splat(0.5))
+        raycourse::meshes::MeshAlbedo::Constant(raycourse::maths::Colour::splat(0.5))
     );
+}
+
+/// tobj's own words would reach the user here ("read error", "color parse error",
+/// or nothing at all for a face of two corners); the loader answers in the words of
+/// the OBJ format, with the line.
+#[test]
+fn malformed_obj_files_are_told_in_the_formats_words() {
+    let long = format!("v{}\nf 1 1 1\n", " 0".repeat(3_000_000));
+    assert_eq!(
+        scene_error("obj = \"long.obj\"", &[("long.obj", long.as_bytes())]),
+        "DIR/long.obj: cannot load the mesh: line 1: a vertex has 3 coordinates, found 3000000 \
+         (referred to by DIR/scene.toml)"
+    );
+    let two = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n";
+    assert_eq!(
+        scene_error("obj = \"two.obj\"", &[("two.obj", two)]),
+        "DIR/two.obj: cannot load the mesh: line 4: a face has 2 corners; it needs at least 3 \
+         (referred to by DIR/scene.toml)"
+    );
+    let binary = b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR";
+    assert_eq!(
+        scene_error("obj = \"picture.obj\"", &[("picture.obj", binary)]),
+        "DIR/picture.obj: cannot load the mesh: not a text OBJ file (referred to by \
+         DIR/scene.toml)"
+    );
+}
+
+/// A scene made ten times larger is the same picture but for rounding: its meshes
+/// and their hierarchies are built again at the new size, the fast one included.
+#[cfg(feature = "s6")]
+#[test]
+fn a_scaled_scene_with_the_fast_hierarchy_renders_like_the_unscaled_one() {
+    use raycourse::studies::scale::scaled;
+    use raycourse::{encode_png, find_stage, render};
+    use std::num::NonZeroU32;
+
+    let stage = find_stage(6, "bvh").unwrap();
+    let fast = stage
+        .source
+        .replace("acceleration = \"bvh\"", "acceleration = \"fast\"");
+    let overrides = Overrides {
+        width: NonZeroU32::new(48),
+        height: NonZeroU32::new(48),
+        samples: NonZeroU32::new(1),
+        ..Overrides::default()
+    };
+    let pixels = |text: &str| {
+        let scene = parse_scene(text, &stage.file(), &overrides).unwrap();
+        let png = encode_png(&render(&scene).film, scene.settings.gamma);
+        image::load_from_memory(&png).unwrap().to_rgb8().into_raw()
+    };
+    let small = pixels(&fast);
+    let large = pixels(&scaled(&fast, 10.0, Vec3::new(3.0, -2.0, 5.0)).unwrap());
+    let differing = small
+        .chunks_exact(3)
+        .zip(large.chunks_exact(3))
+        .filter(|(a, b)| a.iter().zip(*b).any(|(x, y)| x.abs_diff(*y) > 2))
+        .count();
+    assert!(differing <= 48 * 48 / 50, "{differing} pixels differ");
 }

@@ -3,8 +3,8 @@
 
 use std::num::NonZeroU32;
 
-use indicatif::ProgressBar;
-use raycourse::{Film, Overrides, Real, Scene, find_stage, render};
+use raycourse::maths::Real;
+use raycourse::{Film, Overrides, Scene, find_stage, render};
 
 fn scene(session: u32, name: &str, size: u32) -> Scene {
     let size = NonZeroU32::new(size);
@@ -20,7 +20,7 @@ fn scene(session: u32, name: &str, size: u32) -> Scene {
 }
 
 fn film(scene: &Scene) -> Film {
-    render(scene, &ProgressBar::hidden()).film
+    render(scene).film
 }
 
 fn luminance(film: &Film, row: u32, column: u32) -> Real {
@@ -40,9 +40,9 @@ fn white_disk_covers_the_sphere_s_angular_size() {
     assert_eq!(white + black, (512 * 512) as Real, "only white and black");
     let half_angle = (10.0 as Real / 55.0).asin();
     let r = 256.0 * half_angle.tan() / (30.0 as Real).to_radians().tan();
-    let expected = raycourse::PI * r * r;
+    let expected = raycourse::maths::PI * r * r;
     assert!(
-        (white - expected).abs() < 2.0 * raycourse::PI * r,
+        (white - expected).abs() < 2.0 * raycourse::maths::PI * r,
         "{white} white pixels, expected about {expected}"
     );
 }

@@ -12,13 +12,15 @@
 //! their own surface, at every scale: the counter-example. In single precision the
 //! renderer is still free of self-hits, but a room a hundredth of its size and ten
 //! thousand units away is below its resolution: that failure is asserted too.
-#![cfg(feature = "s2")]
+#![cfg(feature = "s3")]
 
-use indicatif::ProgressBar;
-use raycourse::{
-    Hit, Overrides, PixelRng, Ray, Real, Scene, Tracer, Vec3, encode_png, find_stage, pixel_rng,
-    render, uniform,
-};
+use std::path::Path;
+
+use raycourse::geometry::{Hit, Ray};
+use raycourse::integrator::Tracer;
+use raycourse::maths::{PixelRng, Real, Vec3, pixel_rng, uniform};
+use raycourse::studies::scale::scaled;
+use raycourse::{Overrides, Scene, encode_png, find_stage, parse_scene, render};
 use rayon::prelude::*;
 use std::num::NonZeroU32;
 
@@ -38,7 +40,7 @@ const SIZE: u32 = 64;
 /// A direction uniform over the sphere of directions.
 fn random_direction(rng: &mut PixelRng) -> Vec3 {
     let z = 2.0 * uniform(rng) - 1.0;
-    let phi = 2.0 * raycourse::PI * uniform(rng);
+    let phi = 2.0 * raycourse::maths::PI * uniform(rng);
     let r = (1.0 - z * z).max(0.0).sqrt();
     Vec3::new(r * phi.cos(), r * phi.sin(), z)
 }
@@ -79,7 +81,7 @@ fn spawn_survey(scene: &Scene, count: u64) -> (u64, u64, u64) {
             let mut tracer = Tracer::new(scene);
             let row = (uniform(&mut rng) * SIZE as Real) as u32 % SIZE;
             let column = (uniform(&mut rng) * SIZE as Real) as u32 % SIZE;
-            let ray = scene.camera.ray(row, column, &mut rng);
+            let ray = scene.camera.sample_ray(row, column, &mut rng);
             let Some(hit) = tracer.trace(&ray) else {
                 return (0, 0, 0);
             };
@@ -106,10 +108,7 @@ fn spawn_survey(scene: &Scene, count: u64) -> (u64, u64, u64) {
 
 /// The scene's image at the comparison size, as display bytes.
 fn image(scene: &Scene) -> Vec<u8> {
-    encode_png(
-        &render(scene, &ProgressBar::hidden()).film,
-        scene.settings.gamma,
-    )
+    encode_png(&render(scene).film, scene.settings.gamma)
 }
 
 /// The decoded RGB bytes of a PNG.
@@ -144,14 +143,15 @@ struct ScaleResult {
     differing: usize,
 }
 
-/// Runs the sweep over `scene`; `shadow` and `lit` are floor points of the unscaled
-/// scene, one in a contact shadow and one in the light.
-fn sweep(scene: &Scene, shadow: Vec3, lit: Vec3) -> Vec<ScaleResult> {
-    let reference = image(scene);
+/// Runs the sweep over the scene file `source` (at `path`); `shadow` and `lit` are
+/// floor points of the unscaled scene, one in a contact shadow and one in the light.
+fn sweep(source: &str, path: &Path, shadow: Vec3, lit: Vec3) -> Vec<ScaleResult> {
+    let load = |text: &str| parse_scene(text, path, &small()).unwrap();
+    let reference = image(&load(source));
     SCALES
         .iter()
         .map(|&s| {
-            let big = scene.scaled(s, SHIFT);
+            let big = load(&scaled(source, s, SHIFT).unwrap());
             let (spawned, self_hits, without_offset) = spawn_survey(&big, SPAWNED);
             let result = ScaleResult {
                 scale: s,
@@ -182,11 +182,6 @@ fn small() -> Overrides {
         samples: NonZeroU32::new(1),
         ..Overrides::default()
     }
-}
-
-/// The scene of stage `name` of `session` at the comparison size.
-fn stage_scene(session: u32, name: &str) -> Scene {
-    find_stage(session, name).unwrap().scene(&small()).unwrap()
 }
 
 /// Pixels allowed to differ from the unscaled image: rays that pass within
@@ -223,17 +218,16 @@ fn assert_robust(results: &[ScaleResult]) {
 
 #[test]
 fn the_room_looks_the_same_at_every_scale() {
-    let room = stage_scene(2, "shadows");
+    let room = find_stage(2, "shadows").unwrap();
     // The sphere of radius 10 touches the floor at (0, -10, 0); the light is at
     // (-10, 20, 40), so the floor 3 units to its right is in the sphere's shadow.
-    assert_robust(&sweep(&room, floor(3.0, 0.0), floor(-20.0, 10.0)));
+    let (shadow, lit) = (floor(3.0, 0.0), floor(-20.0, 10.0));
+    assert_robust(&sweep(room.source, &room.file(), shadow, lit));
 }
 
 #[cfg(feature = "s6")]
 #[test]
 fn spot_looks_the_same_at_every_scale() {
-    use raycourse::parse_scene;
-    use std::path::Path;
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("sessions/s6");
     let text = std::fs::read_to_string(folder.join("bvh.toml"))
         .unwrap()
@@ -241,9 +235,13 @@ fn spot_looks_the_same_at_every_scale() {
         .replace("light_sampling = true\n", "")
         .replace("radius = 5\n", "")
         .replace("antialiasing = 0.5\n", "");
-    let scene = parse_scene(&text, &folder.join("spot-shadows.toml"), &small()).unwrap();
-    assert!(matches!(scene.light, Some(raycourse::Light::Point(_))));
+    let path = folder.join("spot-shadows.toml");
+    let scene = parse_scene(&text, &path, &small()).unwrap();
+    assert!(matches!(
+        scene.light,
+        Some(raycourse::lights::Light::Point(_))
+    ));
     // Beside the cow's front hoof, on the side away from the light, the floor is in
     // its shadow.
-    assert_robust(&sweep(&scene, floor(4.0, 2.0), floor(-20.0, 10.0)));
+    assert_robust(&sweep(&text, &path, floor(4.0, 2.0), floor(-20.0, 10.0)));
 }

@@ -4,8 +4,8 @@
 
 use std::num::NonZeroU32;
 
-use indicatif::ProgressBar;
-use raycourse::{Overrides, Real, Render, Stage, encode_png, render, stages};
+use raycourse::maths::Real;
+use raycourse::{Overrides, Render, Stage, encode_png, render, stages};
 
 const SIZE: NonZeroU32 = NonZeroU32::new(96).unwrap();
 
@@ -27,7 +27,7 @@ fn render_small(stage: &Stage, threads: usize) -> (Render, Real) {
         .num_threads(threads)
         .build()
         .unwrap();
-    let result = pool.install(|| render(&scene, &ProgressBar::hidden()));
+    let result = pool.install(|| render(&scene));
     (result, scene.settings.gamma)
 }
 

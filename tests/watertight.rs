@@ -5,10 +5,10 @@
 //! shared edge differently for each of its triangles, does: the counter-example.
 #![cfg(feature = "s6")]
 
-use raycourse::{
-    Bvh, Mat3, Mesh, ObjData, Placement, Ray, Real, Search, TriangleTest, Vec3, pixel_rng,
-    read_obj, uniform,
-};
+use raycourse::acceleration::Bvh;
+use raycourse::geometry::{Ray, TriangleTest};
+use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, uniform};
+use raycourse::meshes::{Mesh, ObjData, Placement, read_obj};
 use rayon::prelude::*;
 use std::path::Path;
 
@@ -25,9 +25,9 @@ fn jittered_sphere(rings: u32, segments: u32, jitter: Real) -> ObjData {
     let mut rng = pixel_rng(5, 0);
     let mut positions = vec![Vec3::Y];
     for i in 1..rings {
-        let theta = raycourse::PI * i as Real / rings as Real;
+        let theta = raycourse::maths::PI * i as Real / rings as Real;
         for j in 0..segments {
-            let phi = 2.0 * raycourse::PI * j as Real / segments as Real;
+            let phi = 2.0 * raycourse::maths::PI * j as Real / segments as Real;
             let mut u = || (2.0 * uniform(&mut rng) - 1.0) * jitter;
             let p = Vec3::new(
                 theta.sin() * phi.cos(),
@@ -63,7 +63,7 @@ fn jittered_sphere(rings: u32, segments: u32, jitter: Real) -> ObjData {
 fn mesh(data: &ObjData, test: TriangleTest) -> Mesh {
     let mut mesh = Mesh::new(data, &IDENTITY);
     mesh.triangle_test = test;
-    mesh.search = Search::Bvh(Bvh::build(&mesh));
+    mesh.search = std::sync::Arc::new(Bvh::build(&mesh));
     mesh
 }
 

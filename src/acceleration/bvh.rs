@@ -3,11 +3,9 @@
 
 use smallvec::SmallVec;
 
-use crate::geometry::aabb::Aabb;
-use crate::geometry::ray::Ray;
-use crate::geometry::watertight::ShearedRay;
-use crate::maths::numbers::{Real, Vec3};
-use crate::meshes::mesh::{Mesh, MeshHit};
+use crate::geometry::{Aabb, Ray, ShearedRay};
+use crate::maths::{Real, Vec3};
+use crate::meshes::{Mesh, MeshHit, Search};
 
 /// The most triangles a leaf holds: the course stops splitting at small leaves.
 pub const LEAF_SIZE: usize = 4;
@@ -92,6 +90,12 @@ impl Bvh {
         });
         self.nodes.len() - 1
     }
+}
+
+impl Search for Bvh {
+    fn name(&self) -> &'static str {
+        "bvh"
+    }
 
     // ANCHOR: traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`. Without
@@ -99,7 +103,7 @@ impl Bvh {
     /// nodes still to visit. Of two children, the one
     /// the ray enters first is visited first, and a node whose box the ray enters
     /// beyond the nearest hit found so far is skipped.
-    pub fn intersect(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
+    fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let inv = ray.direction.recip();
         let sheared = ShearedRay::new(ray);
         let mut best: Option<MeshHit> = None;
@@ -138,7 +142,7 @@ impl Bvh {
 
     /// Whether `ray` meets any triangle of `mesh` closer than `t_max`: the same walk
     /// through the boxes, in any order, ending at the first triangle hit.
-    pub fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
+    fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let inv = ray.direction.recip();
         let sheared = ShearedRay::new(ray);
         let mut stack: SmallVec<[u32; 64]> = SmallVec::new();

@@ -8,13 +8,11 @@
 use arrayvec::ArrayVec;
 use glam::Vec4;
 
-use crate::acceleration::bvh::Bvh;
+use crate::acceleration::Bvh;
 use crate::acceleration::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
-use crate::geometry::ray::Ray;
-use crate::geometry::triangle::TriangleTest;
-use crate::geometry::watertight::ShearedRay;
-use crate::maths::numbers::{Real, Vec3, to_single};
-use crate::meshes::mesh::{Mesh, MeshHit};
+use crate::geometry::{Ray, ShearedRay, TriangleTest};
+use crate::maths::{Real, Vec3, to_single};
+use crate::meshes::{Mesh, MeshHit, Search};
 
 /// Children per node: one per lane of a 128-bit SIMD register.
 const WIDTH: usize = 4;
@@ -293,6 +291,37 @@ impl FastBvh {
         }
     }
 
+    /// The triangle slots of a leaf that the ray may meet: those the single-precision
+    /// pre-test keeps ([`TriangleGroup::candidates`]) when there is a pre-test ray,
+    /// every slot otherwise.
+    fn candidates<'a>(
+        &'a self,
+        leaf: Pending,
+        ray: Option<&'a GroupRay>,
+    ) -> impl Iterator<Item = usize> + 'a {
+        let first = leaf.child as usize;
+        let groups = (leaf.count as usize).div_ceil(GROUP);
+        (first..first + groups).flat_map(move |g| {
+            let mut mask = lanes(leaf.count as usize - (g - first) * GROUP);
+            if let Some(ray) = ray {
+                mask &= self.groups[g].candidates(ray);
+            }
+            std::iter::from_fn(move || {
+                (mask != 0).then(|| {
+                    let lane = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    GROUP * g + lane
+                })
+            })
+        })
+    }
+}
+
+impl Search for FastBvh {
+    fn name(&self) -> &'static str {
+        "fast"
+    }
+
     // ANCHOR: fast_traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`: the same
     /// hit as [`Bvh::intersect`] (equal distances go to the lower triangle index).
@@ -300,7 +329,7 @@ impl FastBvh {
     /// on the stack, nearer ones on top; a child is skipped when popped if a hit
     /// found meanwhile is closer than its box. In a leaf, only the triangles the
     /// pre-test keeps get the exact test.
-    pub fn intersect(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
+    fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let wide = WideRay::new(ray);
         let sheared = ShearedRay::new(ray);
         let group_ray = pretest_ray(mesh, &sheared);
@@ -338,7 +367,7 @@ impl FastBvh {
 
     /// Whether `ray` meets any triangle of `mesh` closer than `t_max`, stopping at
     /// the first one found.
-    pub fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
+    fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let wide = WideRay::new(ray);
         let sheared = ShearedRay::new(ray);
         let group_ray = pretest_ray(mesh, &sheared);
@@ -366,31 +395,6 @@ impl FastBvh {
             }
         }
         false
-    }
-
-    /// The triangle slots of a leaf that the ray may meet: those the single-precision
-    /// pre-test keeps ([`TriangleGroup::candidates`]) when there is a pre-test ray,
-    /// every slot otherwise.
-    fn candidates<'a>(
-        &'a self,
-        leaf: Pending,
-        ray: Option<&'a GroupRay>,
-    ) -> impl Iterator<Item = usize> + 'a {
-        let first = leaf.child as usize;
-        let groups = (leaf.count as usize).div_ceil(GROUP);
-        (first..first + groups).flat_map(move |g| {
-            let mut mask = lanes(leaf.count as usize - (g - first) * GROUP);
-            if let Some(ray) = ray {
-                mask &= self.groups[g].candidates(ray);
-            }
-            std::iter::from_fn(move || {
-                (mask != 0).then(|| {
-                    let lane = mask.trailing_zeros() as usize;
-                    mask &= mask - 1;
-                    GROUP * g + lane
-                })
-            })
-        })
     }
 }
 

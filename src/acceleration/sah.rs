@@ -2,10 +2,11 @@
 //! candidate planes binned along each axis (Wald 2007). The nodes and the traversal
 //! are the course's ([`Bvh`]); only where each box is split changes.
 
-use crate::acceleration::bvh::{Bvh, Node, partition};
-use crate::geometry::aabb::Aabb;
-use crate::maths::numbers::{Real, Vec3};
-use crate::meshes::mesh::Mesh;
+use crate::acceleration::Bvh;
+use crate::acceleration::bvh::{Node, partition};
+use crate::geometry::Aabb;
+use crate::maths::{Real, Vec3};
+use crate::meshes::Mesh;
 
 /// Candidate split planes per axis.
 const BINS: usize = 16;
@@ -61,29 +62,15 @@ impl Bvh {
                 count,
             } = bvh.nodes[index];
             let range = first as usize..(first + count) as usize;
-            let items = &mut bvh.order[range.clone()];
-            let centre_bounds = items
-                .iter()
-                .fold(Aabb::EMPTY, |b, &t| b.grow(centroids[t as usize]));
-            let leaf_cost = blocks(items.len(), block);
-            let left = match best_split(items, &boxes, &centroids, &centre_bounds, block) {
-                Some(split)
-                    if TRAVERSAL_COST + split.cost / bounds.half_area() < leaf_cost
-                        || count as usize > max_leaf =>
-                {
-                    let low = centre_bounds.min[split.axis];
-                    let extent = centre_bounds.max[split.axis] - low;
-                    partition(items, |&t| {
-                        bin_of(centroids[t as usize][split.axis], low, extent) < split.bin
-                    })
-                }
-                _ if count as usize > max_leaf => items.len() / 2,
-                _ => continue,
+            let items = &mut bvh.order[range];
+            let Some(left) = sah_partition(items, &bounds, (&boxes, &centroids), (max_leaf, block))
+            else {
+                continue;
             };
             let children = bvh.nodes.len() as u32;
             for (start, size) in [
                 (first as usize, left),
-                (first as usize + left, items.len() - left),
+                (first as usize + left, count as usize - left),
             ] {
                 let bounds = bounds_of(&bvh.order[start..start + size], &boxes);
                 bvh.nodes.push(Node {
@@ -102,6 +89,35 @@ impl Bvh {
         bvh
     }
     // ANCHOR_END: sah
+}
+
+/// Splits the node holding `items` (inside `bounds`) by the surface area heuristic:
+/// moves the triangles of the left child to the front of `items` and returns how
+/// many there are, or `None` when the node stays a leaf. `geometry` holds every
+/// triangle's box and centroid; `limits` the most triangles in a leaf and the
+/// block size of the leaf cost.
+fn sah_partition(
+    items: &mut [u32],
+    bounds: &Aabb,
+    (boxes, centroids): (&[Aabb], &[Vec3]),
+    (max_leaf, block): (usize, usize),
+) -> Option<usize> {
+    let centre_bounds = items
+        .iter()
+        .fold(Aabb::EMPTY, |b, &t| b.grow(centroids[t as usize]));
+    let leaf_cost = blocks(items.len(), block);
+    let too_many = items.len() > max_leaf;
+    match best_split(items, boxes, centroids, &centre_bounds, block) {
+        Some(split) if TRAVERSAL_COST + split.cost / bounds.half_area() < leaf_cost || too_many => {
+            let low = centre_bounds.min[split.axis];
+            let extent = centre_bounds.max[split.axis] - low;
+            Some(partition(items, |&t| {
+                bin_of(centroids[t as usize][split.axis], low, extent) < split.bin
+            }))
+        }
+        _ if too_many => Some(items.len() / 2),
+        _ => None,
+    }
 }
 
 /// The box around the triangles `items`.

@@ -6,8 +6,8 @@
 
 use glam::Vec4;
 
-use crate::geometry::watertight::ShearedRay;
-use crate::maths::numbers::{Vec3, to_single};
+use crate::geometry::ShearedRay;
+use crate::maths::{Vec3, to_single};
 
 /// Triangles per group: one per lane of a 128-bit SIMD register.
 pub const GROUP: usize = 4;
@@ -135,9 +135,8 @@ pub fn lanes(count: usize) -> u32 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::ray::Ray;
-    use crate::maths::numbers::Real;
-    use crate::maths::random::{PixelRng, pixel_rng, uniform};
+    use crate::geometry::Ray;
+    use crate::maths::{PixelRng, Real, pixel_rng, uniform};
 
     /// A random point of the cube `[-r, r]^3`.
     fn point(rng: &mut PixelRng, r: Real) -> Vec3 {

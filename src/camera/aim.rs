@@ -1,8 +1,35 @@
 //! Aiming the camera: a frame built from where it is, what it looks at and which way
 //! is up.
 
-use crate::camera::pinhole::Orientation;
-use crate::maths::numbers::{Quat, Real, Vec3};
+use crate::maths::{Quat, Real, Vec3};
+
+/// Which way the camera looks.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Orientation {
+    /// Down `-z`, with `y` up: the camera of the first six sessions.
+    #[default]
+    Fixed,
+    /// Along any direction: camera-space `x`, `y`, `z` become `right`, `up` and
+    /// `back` (minus the viewing direction).
+    Aimed {
+        /// Unit vector to the right of the image.
+        right: Vec3,
+        /// Unit vector to the top of the image.
+        up: Vec3,
+        /// Unit vector from the scene towards the eye.
+        back: Vec3,
+    },
+}
+
+impl Orientation {
+    /// The world vector of camera-space `v`.
+    pub fn to_world(&self, v: Vec3) -> Vec3 {
+        match *self {
+            Orientation::Fixed => v,
+            Orientation::Aimed { right, up, back } => v.x * right + v.y * up + v.z * back,
+        }
+    }
+}
 
 // ANCHOR: aim
 /// The eye position and orientation of a camera at `eye` looking at `target`, with

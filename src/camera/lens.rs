@@ -1,7 +1,6 @@
 //! The thin lens: depth of field from an aperture of finite size.
 
-use crate::maths::numbers::{PI, Real, Vec3};
-use crate::maths::random::{PixelRng, uniform};
+use crate::maths::{PI, PixelRng, Real, Vec3, uniform};
 
 // ANCHOR: disk
 /// A point of the unit disk, uniformly distributed, from two uniform numbers in
@@ -26,6 +25,27 @@ pub fn disk_pdf(x: Real, y: Real) -> Real {
 }
 // ANCHOR_END: disk
 
+/// Where camera rays start.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Lens {
+    /// All at the eye: everything is sharp.
+    #[default]
+    Pinhole,
+    /// Anywhere on a lens: only the focus plane is sharp (depth of field).
+    Thin(ThinLens),
+}
+
+impl Lens {
+    /// The camera-space ray from `start` along `direction` as this lens makes it:
+    /// unchanged through a pinhole, refocused through a thin lens.
+    pub fn refocus(&self, start: Vec3, direction: Vec3, rng: &mut PixelRng) -> (Vec3, Vec3) {
+        match self {
+            Lens::Pinhole => (start, direction),
+            Lens::Thin(lens) => lens.refocus(start, direction, rng),
+        }
+    }
+}
+
 /// A thin lens of radius `aperture` focused at distance `focus` in front of the eye.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ThinLens {
@@ -37,15 +57,15 @@ pub struct ThinLens {
 
 impl ThinLens {
     // ANCHOR: thin_lens
-    /// The start and direction, in camera space (eye at the origin, looking down
-    /// `-z`), of the ray through the lens for the pinhole direction `direction`: the
-    /// pinhole ray meets the focus plane `z = -focus` at a point every ray through
-    /// the lens passes through, so that plane is sharp; the ray starts at a random
-    /// point of the aperture disk.
-    pub fn ray(&self, direction: Vec3, rng: &mut PixelRng) -> (Vec3, Vec3) {
-        let focus_point = direction * (self.focus / -direction.z);
+    /// The camera-space ray through the lens for the pinhole ray from `start` (the
+    /// eye) along `direction`: the pinhole ray meets the focus plane, at distance
+    /// `focus` in front of the eye, at a point every ray through the lens passes
+    /// through, so that plane is sharp; the ray starts at a random point of the
+    /// aperture disk around the eye.
+    pub fn refocus(&self, start: Vec3, direction: Vec3, rng: &mut PixelRng) -> (Vec3, Vec3) {
+        let focus_point = start + direction * (self.focus / -direction.z);
         let (x, y) = sample_disk(uniform(rng), uniform(rng));
-        let origin = Vec3::new(x, y, 0.0) * self.aperture;
+        let origin = start + Vec3::new(x, y, 0.0) * self.aperture;
         (origin, focus_point - origin)
     }
     // ANCHOR_END: thin_lens
@@ -54,7 +74,7 @@ impl ThinLens {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::maths::random::pixel_rng;
+    use crate::maths::pixel_rng;
 
     #[test]
     fn disk_samples_stay_in_the_disk() {
@@ -74,7 +94,7 @@ mod tests {
         let target = direction * 5.5;
         let mut rng = pixel_rng(3, 4);
         for _ in 0..100 {
-            let (origin, through) = lens.ray(direction, &mut rng);
+            let (origin, through) = lens.refocus(Vec3::ZERO, direction, &mut rng);
             assert!(origin.length() <= 2.0 && origin.z == 0.0);
             let t = (target.z - origin.z) / through.z;
             assert!((origin + t * through - target).length() < 1e-12);

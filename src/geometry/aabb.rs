@@ -1,7 +1,7 @@
 //! Axis-aligned bounding boxes and the slab test.
 
-use crate::geometry::ray::Ray;
-use crate::maths::numbers::{Real, Vec3, error_bound};
+use crate::geometry::Ray;
+use crate::maths::{Real, Vec3, error_bound};
 
 /// The box `[min, max]`: the smallest axis-aligned box around some geometry.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,7 +1,7 @@
 //! Ray-triangle intersection.
 
-use crate::geometry::ray::Ray;
-use crate::maths::numbers::{Real, Vec3};
+use crate::geometry::Ray;
+use crate::maths::{Real, Vec3};
 
 /// Where a ray meets a triangle: its distance and the barycentric coordinates of the
 /// point, `P = alpha A + beta B + gamma C` with `alpha = 1 - beta - gamma`.
@@ -23,7 +23,7 @@ pub enum TriangleTest {
     /// version, used by the session-5 stages. A ray through a shared edge can,
     /// rarely, miss both triangles.
     MollerTrumbore,
-    /// Woop, Benthin and Wald's watertight test ([`crate::ShearedRay`]): no ray slips
+    /// Woop, Benthin and Wald's watertight test ([`crate::geometry::ShearedRay`]): no ray slips
     /// between two triangles that share an edge.
     #[default]
     Watertight,

@@ -1,6 +1,6 @@
 //! The watertight ray-triangle test of Woop, Benthin and Wald (JCGT 2013).
 //!
-//! The course's test ([`crate::intersect_triangle`]) computes each barycentric
+//! The course's test ([`crate::geometry::intersect_triangle`]) computes each barycentric
 //! coordinate from the triangle's own edge vectors, so two triangles sharing an edge
 //! round that edge differently: a ray through the edge can slip between them. Here
 //! every vertex is first moved into the ray's own frame, where the ray is the `z`
@@ -8,9 +8,9 @@
 //! cross product of the edge's two transformed vertices. Both triangles of a shared
 //! edge compute that product from the same two numbers, so they always agree.
 
-use crate::geometry::ray::Ray;
-use crate::geometry::triangle::TriangleHit;
-use crate::maths::numbers::{Real, Vec3};
+use crate::geometry::Ray;
+use crate::geometry::TriangleHit;
+use crate::maths::{Real, Vec3};
 
 /// A ray in its own frame: translated to its origin, axes permuted so that the
 /// largest component of the direction is `z`, then sheared so that the direction
@@ -73,7 +73,7 @@ impl ShearedRay {
     /// recomputed with its exact sign when it rounds to 0, so that two triangles
     /// sharing an edge decide it alike). The distance is
     /// `t = (e0 a_z + e1 b_z + e2 c_z) s_z / (e0 + e1 + e2)`. A ray spawned from a
-    /// surface starts beyond the error bound of its hit point ([`crate::Hit::spawn`]),
+    /// surface starts beyond the error bound of its hit point ([`crate::geometry::Hit::spawn`]),
     /// so it cannot meet the triangle it left again; pbrt-v4 also refuses any `t`
     /// below a bound on its own rounding error, but that bound grows without limit
     /// for a triangle seen nearly edge-on, whose hits it would then refuse far from

@@ -1,9 +1,43 @@
-//! The integrator: the radiance arriving along a ray, the course's recursive `radiance`.
+//! The integrator: the radiance arriving at the eye along a ray, the course's
+//! recursive `radiance` (`obtenirCouleur`), and each material's and light's part of
+//! it. Every function here is a method of [`Tracer`], which holds the scene, the
+//! pixel's random numbers and the count of rays traced.
+//!
+//! | file | session | what it holds |
+//! |---|---|---|
+//! | [`tracer`] | 1 | the tracer and its one way of tracing a ray |
+//! | [`radiance`] | 1 | `radiance`: emitted plus reflected light, by material |
+//! | [`direct`] | 1 | light from the light source: Lambert's law under a point light |
+//! | [`shadows`] | 2 | shadow rays |
+//! | `bounce` | 2, 3 | one more bounce, while the path may still bounce |
+//! | [`specular`] | 2 | mirrors and glass |
+//! | [`diffuse`] | 3 | a diffuse surface's direct and indirect light; cosine-weighted directions |
+//! | `indirect` | 3 | indirect light by Monte Carlo: one bounce in a random direction |
+//! | [`light_sampling`] | 4 | direct light from a sphere light, sampled; indirect light without it |
+//! | [`roulette`] | 4 | Russian roulette past the bounce limit |
+//! | [`fresnel_glass`] | 4 | glass that reflects part of the light |
+
+pub mod direct;
+pub mod radiance;
+pub mod tracer;
+
+#[cfg(all(feature = "s2", not(feature = "s4")))]
+pub mod bounce;
+#[cfg(feature = "s2")]
+pub mod shadows;
+#[cfg(feature = "s2")]
+pub mod specular;
 
 #[cfg(feature = "s3")]
+pub mod diffuse;
+#[cfg(all(feature = "s3", not(feature = "s4")))]
 pub mod indirect;
-pub mod radiance;
-pub mod termination;
 
-pub use radiance::*;
-pub use termination::*;
+#[cfg(feature = "s4")]
+pub mod fresnel_glass;
+#[cfg(feature = "s4")]
+pub mod light_sampling;
+#[cfg(feature = "s4")]
+pub mod roulette;
+
+pub use tracer::Tracer;

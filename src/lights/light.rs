@@ -1,7 +1,8 @@
 //! The point light of the course and Lambert's law.
 
-use crate::maths::numbers::{Colour, PI, Real, Vec3};
+use crate::maths::{Colour, PI, Real, Vec3};
 
+// ANCHOR: light
 /// The light source of a scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Light {
@@ -9,7 +10,7 @@ pub enum Light {
     Point(PointLight),
     /// A glowing sphere: soft shadows.
     #[cfg(feature = "s4")]
-    Sphere(crate::lights::sphere_light::SphereLight),
+    Sphere(crate::lights::SphereLight),
 }
 
 /// A point light radiating `intensity` watts equally in every direction.
@@ -20,6 +21,7 @@ pub struct PointLight {
     /// Total emitted power `I`, on the course's scale.
     pub intensity: Real,
 }
+// ANCHOR_END: light
 
 impl PointLight {
     // ANCHOR: lambert

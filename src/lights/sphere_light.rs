@@ -1,12 +1,10 @@
-//! A spherical light: soft shadows, and direct lighting by sampling the light.
+//! A spherical light: soft shadows, and the cone of directions under which a point
+//! sees it, for direct lighting by sampling the light.
 
-use crate::geometry::hit::Hit;
-use crate::geometry::sphere::Sphere;
-use crate::integrator::radiance::Tracer;
-use crate::materials::material::Material;
+use crate::geometry::Sphere;
+use crate::materials::Material;
 use crate::maths::frame::Frame;
-use crate::maths::numbers::{Colour, PI, Real, Vec3};
-use crate::maths::random::uniform;
+use crate::maths::{Colour, PI, Real, Vec3};
 
 /// A sphere that emits the same radiance from every point of its surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -113,28 +111,6 @@ impl SphereLight {
         let local = cone.sample(u1, u2);
         Some((frame.to_world(local), cone.pdf(local.z)))
     }
-}
-
-impl Tracer<'_> {
-    // ANCHOR: light_sampling
-    /// Light arriving straight from the sphere light at a diffuse point, estimated
-    /// with one direction sampled towards the light:
-    /// `L = Le (albedo / pi) cos(theta) / pdf(w)`, 0 when an object is in the way.
-    pub fn sample_light(&mut self, light: &SphereLight, hit: &Hit, albedo: Colour) -> Colour {
-        let (u1, u2) = (uniform(&mut self.rng), uniform(&mut self.rng));
-        let Some((direction, pdf)) = light.sample(hit.point, u1, u2) else {
-            return Colour::ZERO;
-        };
-        let cos = direction.dot(hit.shading_normal);
-        if cos <= 0.0 {
-            return Colour::ZERO;
-        }
-        match self.trace(&hit.spawn(direction)) {
-            Some(seen) if seen.object == light.object => light.emission * albedo / PI * cos / pdf,
-            _ => Colour::ZERO,
-        }
-    }
-    // ANCHOR_END: light_sampling
 }
 
 #[cfg(test)]

@@ -1,11 +1,6 @@
 //! Fresnel reflection: glass reflects part of the light and transmits the rest.
 
-use crate::geometry::hit::Hit;
-use crate::geometry::ray::Ray;
-use crate::integrator::radiance::Tracer;
-use crate::materials::optics::{interface, reflect, refract};
-use crate::maths::numbers::{Colour, Real};
-use crate::maths::random::uniform;
+use crate::maths::Real;
 
 // ANCHOR: fresnel
 /// The fraction of unpolarised light reflected at a smooth dielectric boundary, for
@@ -25,27 +20,6 @@ pub fn fresnel_reflectance(cos_i: Real, eta: Real) -> Real {
     (r_s * r_s + r_p * r_p) / 2.0
 }
 // ANCHOR_END: fresnel
-
-impl Tracer<'_> {
-    // ANCHOR: fresnel_glass
-    /// Radiance seen through glass that also reflects: the path follows the
-    /// reflected ray with probability `F` and the refracted one otherwise. Each
-    /// choice is weighted by its probability, which cancels the factor `F` or
-    /// `1 - F` of the light it carries.
-    pub fn fresnel_glass(&mut self, ray: &Ray, hit: &Hit, index: Real, bounces: u32) -> Colour {
-        let Some((next, weight)) = self.continue_path(bounces) else {
-            return Colour::ZERO;
-        };
-        let (normal, eta) = interface(ray.direction, hit.normal, index);
-        let cos_i = -ray.direction.dot(normal);
-        let direction = match refract(ray.direction, normal, eta) {
-            Some(t) if uniform(&mut self.rng) >= fresnel_reflectance(cos_i, eta) => t,
-            _ => reflect(ray.direction, normal),
-        };
-        weight * self.radiance(&hit.spawn(direction), next)
-    }
-    // ANCHOR_END: fresnel_glass
-}
 
 #[cfg(test)]
 mod tests {

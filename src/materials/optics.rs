@@ -1,10 +1,7 @@
-//! Mirrors and glass: the laws of reflection and refraction, and the radiance of a
-//! ray that meets a specular surface.
+//! The laws of reflection and refraction: the directions a ray leaves a mirror or
+//! glass by.
 
-use crate::geometry::hit::Hit;
-use crate::geometry::ray::Ray;
-use crate::integrator::radiance::Tracer;
-use crate::maths::numbers::{Colour, Real, Vec3};
+use crate::maths::{Real, Vec3};
 
 // ANCHOR: reflect
 /// The mirror direction of `incident` about the unit `normal`: `d - 2 (d . n) n`.
@@ -45,33 +42,6 @@ pub fn interface(direction: Vec3, outward_normal: Vec3, index: Real) -> (Vec3, R
     }
 }
 // ANCHOR_END: interface
-
-impl Tracer<'_> {
-    // ANCHOR: mirror
-    /// Radiance seen in a mirror: that of the reflected ray, one bounce fewer.
-    pub fn mirror(&mut self, ray: &Ray, hit: &Hit, bounces: u32) -> Colour {
-        let Some((next, weight)) = self.continue_path(bounces) else {
-            return Colour::ZERO;
-        };
-        let reflected = hit.spawn(reflect(ray.direction, hit.normal));
-        weight * self.radiance(&reflected, next)
-    }
-    // ANCHOR_END: mirror
-
-    // ANCHOR: glass
-    /// Radiance seen through glass of refractive `index`: the ray enters or leaves
-    /// and bends; past the critical angle it is reflected instead.
-    pub fn glass(&mut self, ray: &Ray, hit: &Hit, index: Real, bounces: u32) -> Colour {
-        let Some((next, weight)) = self.continue_path(bounces) else {
-            return Colour::ZERO;
-        };
-        let (normal, eta) = interface(ray.direction, hit.normal, index);
-        let direction =
-            refract(ray.direction, normal, eta).unwrap_or_else(|| reflect(ray.direction, normal));
-        weight * self.radiance(&hit.spawn(direction), next)
-    }
-    // ANCHOR_END: glass
-}
 
 #[cfg(test)]
 mod tests {

@@ -3,10 +3,7 @@
 
 use std::path::Path;
 
-use crate::maths::numbers::{Colour, Real};
-use crate::meshes::mesh::{Mesh, ObjData};
-use crate::scene_file::error::{SceneError, one_line};
-use crate::scene_file::load::{FilterSpec, MeshSpec};
+use crate::maths::{Colour, Real};
 
 /// How a texture is read between texel centres.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -83,52 +80,6 @@ impl Texture {
         }
     }
     // ANCHOR_END: lookup
-}
-
-/// The texture a scene file's mesh asks for: its own `texture` file (next to the
-/// scene file at `scene`), else the OBJ material's `map_Kd`. `None` when there is
-/// neither, or when the OBJ file has no texture coordinates: texturing is then off
-/// for that mesh.
-pub fn mesh_texture(
-    spec: &MeshSpec,
-    data: &ObjData,
-    scene: &Path,
-) -> Result<Option<Texture>, SceneError> {
-    let file = match &spec.texture {
-        Some(name) => Some(scene.parent().unwrap_or(Path::new("")).join(name)),
-        None => data.diffuse_texture.clone(),
-    };
-    let Some(file) = file.filter(|_| !data.uvs.is_empty()) else {
-        return Ok(None);
-    };
-    let filter = match spec.texture_filter {
-        Some(FilterSpec::Bilinear) => Filter::Bilinear,
-        Some(FilterSpec::Nearest) | None => Filter::Nearest,
-    };
-    Texture::load(&file, filter)
-        .map(Some)
-        .map_err(|e| SceneError::Asset {
-            scene: scene.to_owned(),
-            file,
-            message: format!("cannot read the texture: {}", one_line(&e)),
-        })
-}
-
-impl Mesh {
-    // ANCHOR: uv
-    /// The texture coordinates of the point of barycentric `weights` in `triangle`:
-    /// `alpha uv_A + beta uv_B + gamma uv_C`.
-    pub fn uv_at(&self, triangle: u32, weights: [Real; 3]) -> [Real; 2] {
-        let corners = self.triangles[triangle as usize];
-        let mut uv = [0.0; 2];
-        for (k, &corner) in corners.iter().enumerate() {
-            let [u, v] = self.uvs[corner as usize];
-            uv[0] += weights[k] * u;
-            uv[1] += weights[k] * v;
-        }
-        uv
-    }
-    // ANCHOR_END: uv
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! An orthonormal frame around a normal, to turn a direction sampled around the
 //! `z` axis into one around the normal.
 
-use crate::maths::numbers::{Real, Vec3};
+use crate::maths::{Real, Vec3};
 
 /// Three orthonormal axes `(t1, t2, n)`: the local frame `(T1, T2, N)` of the course.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,15 +1,21 @@
-//! Numbers, random numbers and sampling: the mathematics every other part uses.
+//! Maths: the numbers every other part of the renderer computes with.
+//!
+//! | file | session | what it holds |
+//! |---|---|---|
+//! | [`numbers`] | 1 | `Real`, `Vec3`, `Colour`: the number types, named once |
+//! | [`values`] | 1 | numbers read from scene files, checked against their rule |
+//! | [`random`] | 1 | one random generator per pixel |
+//! | [`sampling`] | 3 | random directions and offsets, each beside its density |
+//! | [`frame`] | 3 | an orthonormal frame around a normal |
+
+pub mod numbers;
+pub mod random;
+pub mod values;
 
 #[cfg(feature = "s3")]
 pub mod frame;
-pub mod numbers;
-pub mod random;
 #[cfg(feature = "s3")]
 pub mod sampling;
 
-#[cfg(feature = "s3")]
-pub use frame::*;
 pub use numbers::*;
 pub use random::*;
-#[cfg(feature = "s3")]
-pub use sampling::*;

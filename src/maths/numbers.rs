@@ -71,7 +71,7 @@ pub fn to_double(x: Real) -> f64 {
     f64::from(x)
 }
 
-/// Linear radiance in red, green and blue, on the course's scale (see [`crate::Film`]).
+/// Linear radiance in red, green and blue, on the course's scale (see [`crate::render::Film`]).
 pub type Colour = Vec3;
 
 /// The machine epsilon of [`Real`] halved: the largest relative error of one

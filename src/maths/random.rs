@@ -2,7 +2,7 @@
 
 use rand::{RngExt, SeedableRng};
 
-use crate::maths::numbers::Real;
+use crate::maths::Real;
 
 /// The random generator of one pixel: a small, fast PCG (64-bit output, 128-bit state).
 pub type PixelRng = rand_pcg::Pcg64Mcg;

@@ -1,7 +1,7 @@
 //! Random directions and offsets for Monte Carlo integration, each sampler beside
 //! its probability density (pdf), which the estimator divides by.
 
-use crate::maths::numbers::{PI, Real, Vec3};
+use crate::maths::{PI, Real, Vec3};
 
 // ANCHOR: cosine
 /// A direction in the hemisphere around `+z` with density proportional to

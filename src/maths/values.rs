@@ -2,9 +2,9 @@
 //! rule is refused with a message saying what was expected, and the loader adds the
 //! file, key and line.
 
-use serde::Deserialize;
+use serde::{Deserialize, Deserializer};
 
-use crate::maths::numbers::{Colour, Real, Vec3};
+use crate::maths::{Colour, Real, Vec3};
 
 fn finite(v: Real) -> Result<Real, String> {
     if v.is_finite() {
@@ -134,6 +134,18 @@ impl TryFrom<[Real; 3]> for Albedo {
         }
         Ok(Self(Colour::from_array(v)))
     }
+}
+
+/// The one field of a scene-file variant such as `{ diffuse = [r, g, b] }`: an
+/// [`Albedo`], for `#[serde(deserialize_with)]` on an enum variant.
+pub fn albedo<'de, D: Deserializer<'de>>(from: D) -> Result<Colour, D::Error> {
+    Albedo::deserialize(from).map(|a| a.0)
+}
+
+/// The one field of a scene-file variant such as `{ glass = 1.5 }`: a
+/// [`Positive`] number, for `#[serde(deserialize_with)]` on an enum variant.
+pub fn positive<'de, D: Deserializer<'de>>(from: D) -> Result<Real, D::Error> {
+    Positive::deserialize(from).map(|p| p.0)
 }
 
 #[cfg(test)]

@@ -1,15 +1,16 @@
 //! Smooth shading: normals interpolated across triangles.
 
-use crate::maths::numbers::{Real, Vec3};
-use crate::meshes::mesh::Mesh;
+use crate::maths::{Real, Vec3};
+use crate::meshes::Mesh;
 
 impl Mesh {
     // ANCHOR: smooth_normal
-    /// The shading normal `alpha N_A + beta N_B + gamma N_C`, normalised, for the
+    /// The shading normal `b_A N_A + b_B N_B + b_C N_C`, normalised, for the
     /// barycentric `weights` of a point of `triangle`: the vertex normals of the
     /// model, blended so that light varies smoothly across triangle edges. Falls
-    /// back to the `geometric` normal if the mesh has no normals or they cancel, and
-    /// is turned to the geometric normal's side.
+    /// back to the `geometric` normal if the mesh has no normals (a flat-shaded mesh
+    /// has its normals removed when it is loaded) or they cancel, and is turned to
+    /// the geometric normal's side.
     pub fn smooth_normal(&self, triangle: u32, weights: [Real; 3], geometric: Vec3) -> Vec3 {
         if self.normals.is_empty() {
             return geometric;

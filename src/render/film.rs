@@ -1,6 +1,6 @@
 //! The film: linear radiance per pixel, turned into 8-bit colour only at output.
 
-use crate::maths::numbers::{Colour, Real};
+use crate::maths::{Colour, Real};
 
 /// A `width` x `height` grid of linear radiance values, rows from the top.
 #[derive(Clone, Debug, PartialEq)]

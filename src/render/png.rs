@@ -6,8 +6,8 @@ use std::path::Path;
 use image::ImageEncoder;
 use image::codecs::png::{CompressionType, FilterType, PngEncoder};
 
-use crate::maths::numbers::Real;
-use crate::render::film::Film;
+use crate::maths::Real;
+use crate::render::Film;
 
 /// The film as PNG bytes. The encoder settings are fixed so the same film always
 /// gives the same bytes: the snapshot tests compare them byte for byte.

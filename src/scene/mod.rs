@@ -1,5 +1,21 @@
-//! The scene: camera, objects, light and settings, and the nearest hit among the objects.
+//! The scene: the camera, the objects, the light and the render settings, and the
+//! nearest hit of a ray among the objects.
+//!
+//! | file | session | what it holds |
+//! |---|---|---|
+//! | [`objects`] | 1 | the scene and the nearest hit among its spheres |
+//! | [`settings`] | 1 | how a scene is rendered: samples, bounces, gamma, ... |
+//! | [`occlusion`] | 2 | whether anything lies on a shadow ray |
+//! | [`mesh_hits`] | 5 | the nearest hit among the meshes |
 
 pub mod objects;
+pub mod settings;
 
-pub use objects::*;
+#[cfg(feature = "s2")]
+pub mod occlusion;
+
+#[cfg(feature = "s5")]
+pub mod mesh_hits;
+
+pub use objects::Scene;
+pub use settings::Settings;

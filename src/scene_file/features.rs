@@ -5,22 +5,8 @@
 //! the feature that brings it, using the session number below.
 
 /// The last course session enabled in this build: 7 with feature `s7` (the default),
-/// 1 with `s1` alone.
-pub const SESSION: u32 = if cfg!(feature = "s7") {
-    7
-} else if cfg!(feature = "s6") {
-    6
-} else if cfg!(feature = "s5") {
-    5
-} else if cfg!(feature = "s4") {
-    4
-} else if cfg!(feature = "s3") {
-    3
-} else if cfg!(feature = "s2") {
-    2
-} else {
-    1
-};
+/// 1 with `s1` alone. The build script (`build.rs`) finds it.
+pub const SESSION: u32 = (env!("RAYCOURSE_SESSION").as_bytes()[0] - b'0') as u32;
 
 /// The Cargo feature of a session: `s` followed by its number.
 pub fn feature_name(session: u32) -> String {

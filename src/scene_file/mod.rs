@@ -1,17 +1,41 @@
-//! Scene files: the TOML format, its checks and errors, and the course's stages.
+//! Scene files: the TOML format, its checks and errors, the loader session by
+//! session, and the course's stages.
+//!
+//! | file | session | what it holds |
+//! |---|---|---|
+//! | [`format`] | 1 | every key of the format, for every session |
+//! | [`error`] | 1 | errors that name the file, the key and what was expected |
+//! | [`features`] | 1 | which session this build was compiled for |
+//! | [`sessions`] | 1 | which session brings each key: "needs feature s2" |
+//! | [`consistency`] | 1 | values that do not go together |
+//! | [`load`] | 1 | reading a file into the scene of session 1, then the later sessions' parts |
+//! | [`session3`] | 3 | antialiasing |
+//! | [`session4`] | 4 | the sphere light and the thin lens |
+//! | [`session5`] | 5 | triangle meshes |
+//! | [`session6`] | 6 | hierarchies and smooth normals |
+//! | [`session7`] | 7 | textures and the aimed camera |
+//! | [`stages`] | 1 | the course's stages, one scene file each |
 
+pub mod consistency;
 pub mod error;
 pub mod features;
+pub mod format;
 pub mod load;
-#[cfg(feature = "s5")]
-pub mod meshes;
+pub mod sessions;
 pub mod stages;
-pub mod values;
 
-pub use error::*;
-pub use features::*;
-pub use load::*;
+#[cfg(feature = "s3")]
+pub mod session3;
+#[cfg(feature = "s4")]
+pub mod session4;
 #[cfg(feature = "s5")]
-pub use meshes::*;
-pub use stages::*;
-pub use values::*;
+pub mod session5;
+#[cfg(feature = "s6")]
+pub mod session6;
+#[cfg(feature = "s7")]
+pub mod session7;
+
+pub use error::{SceneError, one_line};
+pub use features::SESSION;
+pub use load::{Overrides, load_scene, parse_scene};
+pub use stages::{Stage, find_stage, stage_names, stages};

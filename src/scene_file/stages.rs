@@ -3,10 +3,9 @@
 
 use std::path::Path;
 
-use crate::scene::objects::Scene;
-use crate::scene_file::error::SceneError;
+use crate::scene::Scene;
 use crate::scene_file::features::SESSION;
-use crate::scene_file::load::{Overrides, parse_scene};
+use crate::scene_file::{Overrides, SceneError, parse_scene};
 
 /// One stage of the course: a figure of the course notes and the scene file that
 /// renders it.
@@ -151,7 +150,12 @@ impl Stage {
     /// The stage's scene, at the course's settings but for `overrides`. Files the
     /// scene refers to (meshes, textures) are found in this crate's folder.
     pub fn scene(&self, overrides: &Overrides) -> Result<Scene, SceneError> {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(self.path);
-        parse_scene(self.source, &path, overrides)
+        parse_scene(self.source, &self.file(), overrides)
+    }
+
+    /// The scene file's path in this crate's folder, next to which the files it
+    /// refers to are found.
+    pub fn file(&self) -> std::path::PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join(self.path)
     }
 }

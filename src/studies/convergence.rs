@@ -3,12 +3,9 @@
 
 use std::time::Instant;
 
-use indicatif::ProgressBar;
-
-use crate::maths::numbers::Real;
-use crate::render::film::Film;
-use crate::render::rows::render;
-use crate::scene::objects::Scene;
+use crate::maths::Real;
+use crate::render::{Film, render_reporting};
+use crate::scene::Scene;
 
 /// How far an image is from the reference, over every pixel and channel of linear
 /// radiance.
@@ -156,20 +153,21 @@ pub fn read_rungs(text: &str) -> Result<Vec<Rung>, String> {
 }
 
 /// Renders `scene` at each sample count of `ladder` on the current thread pool and
-/// measures each image against `reference`, ticking `progress` as [`render`] does.
+/// measures each image against `reference`, reporting to `progress` as
+/// [`render_reporting`] does.
 pub fn climb(
     variant: &str,
     mut scene: Scene,
     ladder: &[u32],
     reference: &Film,
-    progress: &ProgressBar,
+    progress: &(dyn Fn(u64) + Sync),
 ) -> Vec<Rung> {
     ladder
         .iter()
         .map(|&samples| {
             scene.settings.samples = samples;
             let start = Instant::now();
-            let image = render(&scene, progress);
+            let image = render_reporting(&scene, progress);
             let seconds = start.elapsed().as_secs_f64() as Real;
             Rung {
                 variant: variant.to_owned(),
@@ -184,7 +182,7 @@ pub fn climb(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::maths::numbers::Colour;
+    use crate::maths::Colour;
 
     fn film(values: &[Real]) -> Film {
         Film {

@@ -7,9 +7,9 @@ use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
 
-use crate::geometry::ray::Ray;
-use crate::maths::numbers::{Real, Vec3, to_single};
-use crate::meshes::mesh::Mesh;
+use crate::geometry::Ray;
+use crate::maths::{Real, Vec3, to_single};
+use crate::meshes::Mesh;
 
 /// What is asked of every ray of a set.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

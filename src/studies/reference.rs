@@ -4,9 +4,9 @@
 use std::hash::{DefaultHasher, Hash, Hasher};
 use std::path::{Path, PathBuf};
 
-use crate::maths::numbers::{Colour, Real, to_double};
-use crate::render::film::Film;
-use crate::render::png::write_atomically;
+use crate::maths::{Colour, Real, to_double};
+use crate::render::Film;
+use crate::render::write_atomically;
 
 /// The first line of a reference file.
 const MAGIC: &[u8] = b"raycourse reference 1\n";

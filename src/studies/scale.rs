@@ -1,83 +1,82 @@
 //! A scene made larger or smaller and moved: the same picture, in other numbers.
 
-use crate::lights::light::Light;
-use crate::maths::numbers::{Real, Vec3};
-use crate::scene::objects::Scene;
+use crate::maths::{Real, Vec3, to_double};
 
-impl Scene {
-    /// The same scene made `factor` times larger about the origin, then moved by
-    /// `shift`: every point `p` becomes `factor p + shift`, every length `factor`
-    /// times longer. Its image is the same: a point light's intensity grows with
-    /// `factor^2`, so that the irradiance `I cos / d^2` it gives is unchanged, and
-    /// a sphere light keeps its radiance, seen under the same solid angle. The
-    /// renderer has no length of its own, so any difference between the two images
-    /// is rounding: how the scale sweep of the tests and the book measures it.
-    pub fn scaled(&self, factor: Real, shift: Vec3) -> Scene {
-        let place = |p: Vec3| p * factor + shift;
-        let mut out = self.clone();
-        out.camera.position = place(out.camera.position);
-        #[cfg(feature = "s4")]
-        if let crate::camera::pinhole::Lens::Thin(lens) = &mut out.camera.lens {
-            lens.aperture *= factor;
-            lens.focus *= factor;
+// ANCHOR: scaled
+/// The scene file `source` with its scene made `factor` times larger about the
+/// origin, then moved by `shift`: every point `p` becomes `factor p + shift`, every
+/// length `factor` times longer, and the light's power `factor^2` times larger, so
+/// that the light reaching each point is unchanged (a point light gives
+/// `I cos / (4 pi d^2)`, a sphere light glows with `I / (4 pi^2 R^2)`). The renderer
+/// has no length of its own, so any difference between the two images is rounding:
+/// how the scale sweep of the tests and the book measures it. The scaled file is
+/// read like any other, so every part of the scene, meshes and their hierarchies
+/// included, is built again at its new size.
+pub fn scaled(source: &str, factor: Real, shift: Vec3) -> Result<String, String> {
+    let mut file: toml::Table = source.parse().map_err(|e: toml::de::Error| e.to_string())?;
+    let (factor, shift) = (to_double(factor), shift.to_array().map(to_double));
+    if let Some(camera) = table(&mut file, "camera") {
+        move_point(camera, "position", factor, shift);
+        move_point(camera, "look_at", factor, shift);
+        if let Some(lens) = table(camera, "lens") {
+            multiply(lens, "aperture", factor);
+            multiply(lens, "focus", factor);
         }
-        for sphere in &mut out.spheres {
-            sphere.centre = place(sphere.centre);
-            sphere.radius *= factor;
+    }
+    if let Some(light) = table(&mut file, "light") {
+        move_point(light, "position", factor, shift);
+        multiply(light, "radius", factor);
+        multiply(light, "intensity", factor * factor);
+    }
+    for sphere in entries(&mut file, "spheres") {
+        move_point(sphere, "centre", factor, shift);
+        multiply(sphere, "radius", factor);
+    }
+    for mesh in entries(&mut file, "meshes") {
+        mesh.entry("scale").or_insert(1.0.into());
+        mesh.entry("translation").or_insert(vec![0.0; 3].into());
+        multiply(mesh, "scale", factor);
+        move_point(mesh, "translation", factor, shift);
+    }
+    toml::to_string(&file).map_err(|e| e.to_string())
+}
+// ANCHOR_END: scaled
+
+/// Moves the point `[x, y, z]` of `key` in `table`, if there is one, to
+/// `factor p + shift`.
+fn move_point(table: &mut toml::Table, key: &str, factor: f64, shift: [f64; 3]) {
+    if let Some(point) = table.get_mut(key).and_then(toml::Value::as_array_mut) {
+        for (x, s) in point.iter_mut().zip(shift) {
+            *x = (number(x) * factor + s).into();
         }
-        match &mut out.light {
-            Some(Light::Point(light)) => {
-                light.position = place(light.position);
-                light.intensity *= factor * factor;
-            }
-            #[cfg(feature = "s4")]
-            Some(Light::Sphere(light)) => {
-                light.centre = place(light.centre);
-                light.radius *= factor;
-            }
-            None => {}
-        }
-        #[cfg(feature = "s5")]
-        for mesh in &mut out.meshes {
-            for p in &mut mesh.positions {
-                *p = place(*p);
-            }
-            mesh.bounds = mesh
-                .positions
-                .iter()
-                .fold(crate::geometry::aabb::Aabb::EMPTY, |b, &p| b.grow(p));
-            #[cfg(feature = "s6")]
-            if let crate::meshes::mesh::Search::Bvh(_) = mesh.search {
-                mesh.search =
-                    crate::meshes::mesh::Search::Bvh(crate::acceleration::bvh::Bvh::build(mesh));
-            }
-        }
-        out
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::scene_file::load::Overrides;
-    use crate::scene_file::stages::find_stage;
-
-    #[test]
-    fn every_length_scales_and_every_point_moves() {
-        let room = find_stage(1, "spheres")
-            .unwrap()
-            .scene(&Overrides::default())
-            .unwrap();
-        let shift = Vec3::new(1.0, 2.0, 3.0);
-        let big = room.scaled(10.0, shift);
-        assert_eq!(big.camera.position, room.camera.position * 10.0 + shift);
-        for (a, b) in room.spheres.iter().zip(&big.spheres) {
-            assert_eq!(b.centre, a.centre * 10.0 + shift);
-            assert_eq!(b.radius, a.radius * 10.0);
-        }
-        let (Some(Light::Point(a)), Some(Light::Point(b))) = (room.light, big.light) else {
-            panic!("the room has a point light");
-        };
-        assert_eq!(b.intensity, 100.0 * a.intensity);
+/// Multiplies the number of `key` in `table`, if there is one, by `by`.
+fn multiply(table: &mut toml::Table, key: &str, by: f64) {
+    if let Some(value) = table.get_mut(key) {
+        *value = (number(value) * by).into();
     }
+}
+
+/// The table `name` of `file` (`[camera]`, `[light]`), if there is one.
+fn table<'a>(file: &'a mut toml::Table, name: &str) -> Option<&'a mut toml::Table> {
+    file.get_mut(name).and_then(toml::Value::as_table_mut)
+}
+
+/// The tables of the array `name` of `file` (`[[spheres]]`, `[[meshes]]`).
+fn entries<'a>(file: &'a mut toml::Table, name: &str) -> impl Iterator<Item = &'a mut toml::Table> {
+    let array = file.get_mut(name).and_then(toml::Value::as_array_mut);
+    array
+        .into_iter()
+        .flatten()
+        .filter_map(toml::Value::as_table_mut)
+}
+
+/// A TOML number as a float, whether written as an integer or not (0 otherwise).
+fn number(value: &toml::Value) -> f64 {
+    value
+        .as_float()
+        .or_else(|| value.as_integer().map(|i| i as f64))
+        .unwrap_or(0.0)
 }

@@ -125,90 +125,90 @@ fn toml_value(text: &str) -> toml::Value {
         .unwrap_or_else(|| toml::Value::String(text.to_owned()))
 }
 
-/// The comparisons `raycourse converge --compare` knows: the variants, and the
-/// edits that make the reference (the truth every variant is measured against).
-pub fn comparison(name: &str) -> Option<(Vec<Variant>, Vec<Edit>)> {
-    let variants = |texts: &[&str]| {
-        texts
-            .iter()
-            .map(|t| Variant::parse(t).expect("built-in variants are well formed"))
-            .collect::<Vec<_>>()
-    };
-    let deep = || {
-        Variant::parse("deep:render.bounces=16")
-            .expect("well formed")
-            .edits
-    };
-    Some(match name {
-        "light-sampling" => (
-            variants(&[
-                "naive:render.light_sampling=false",
-                "light sampling:render.light_sampling=true",
-            ]),
-            vec![],
-        ),
-        "bounces" => (
-            variants(&[
-                "1 bounce:render.bounces=1",
-                "2 bounces:render.bounces=2",
-                "4 bounces:render.bounces=4",
-                "8 bounces:render.bounces=8",
-            ]),
-            deep(),
-        ),
-        "roulette" => (
-            variants(&[
-                "limit 2:render.bounces=2",
-                "limit 2 + roulette:render.bounces=2,render.russian_roulette=0.5",
-            ]),
-            deep(),
-        ),
-        "acceleration" => (
-            variants(&[
-                "brute force:render.acceleration=none",
-                "bounding box:render.acceleration=bbox",
-                "BVH:render.acceleration=bvh",
-                "fast BVH:render.acceleration=fast",
-            ]),
-            vec![],
-        ),
-        "leaf" => (
-            variants(&[
-                "leaf 1:render.acceleration=fast,render.leaf_size=1",
-                "leaf 4:render.acceleration=fast,render.leaf_size=4",
-                "leaf 16:render.acceleration=fast,render.leaf_size=16",
-                "leaf 64:render.acceleration=fast,render.leaf_size=64",
-            ]),
-            vec![],
-        ),
-        "filter" => (
-            variants(&[
-                "nearest:meshes.texture_filter=nearest",
-                "bilinear:meshes.texture_filter=bilinear",
-            ]),
-            vec![],
-        ),
-        "triangle-test" => (
-            variants(&[
-                "Moller-Trumbore:render.triangle_test=moller-trumbore",
-                "watertight:render.triangle_test=watertight",
-            ]),
-            vec![],
-        ),
-        _ => return None,
-    })
+/// The comparisons `raycourse converge --compare` knows: each one's name, its
+/// variants (`label:key=value,...`) and the edits that make the reference (the
+/// truth every variant is measured against; none: the scene as it is).
+const COMPARISONS: &[(&str, &[&str], &str)] = &[
+    (
+        "light-sampling",
+        &[
+            "naive:render.light_sampling=false",
+            "light sampling:render.light_sampling=true",
+        ],
+        "",
+    ),
+    (
+        "bounces",
+        &[
+            "1 bounce:render.bounces=1",
+            "2 bounces:render.bounces=2",
+            "4 bounces:render.bounces=4",
+            "8 bounces:render.bounces=8",
+        ],
+        "render.bounces=16",
+    ),
+    (
+        "roulette",
+        &[
+            "limit 2:render.bounces=2",
+            "limit 2 + roulette:render.bounces=2,render.russian_roulette=0.5",
+        ],
+        "render.bounces=16",
+    ),
+    (
+        "acceleration",
+        &[
+            "brute force:render.acceleration=none",
+            "bounding box:render.acceleration=bbox",
+            "BVH:render.acceleration=bvh",
+            "fast BVH:render.acceleration=fast",
+        ],
+        "",
+    ),
+    (
+        "leaf",
+        &[
+            "leaf 1:render.acceleration=fast,render.leaf_size=1",
+            "leaf 4:render.acceleration=fast,render.leaf_size=4",
+            "leaf 16:render.acceleration=fast,render.leaf_size=16",
+            "leaf 64:render.acceleration=fast,render.leaf_size=64",
+        ],
+        "",
+    ),
+    (
+        "filter",
+        &[
+            "nearest:meshes.texture_filter=nearest",
+            "bilinear:meshes.texture_filter=bilinear",
+        ],
+        "",
+    ),
+    (
+        "triangle-test",
+        &[
+            "Moller-Trumbore:render.triangle_test=moller-trumbore",
+            "watertight:render.triangle_test=watertight",
+        ],
+        "",
+    ),
+];
+
+/// The names of the comparisons [`comparison`] knows.
+pub fn comparison_names() -> impl Iterator<Item = &'static str> {
+    COMPARISONS.iter().map(|c| c.0)
 }
 
-/// The names [`comparison`] knows.
-pub const COMPARISONS: &[&str] = &[
-    "light-sampling",
-    "bounces",
-    "roulette",
-    "acceleration",
-    "leaf",
-    "filter",
-    "triangle-test",
-];
+/// The comparison called `name`: its variants, and the edits that make its
+/// reference.
+pub fn comparison(name: &str) -> Option<(Vec<Variant>, Vec<Edit>)> {
+    let (_, variants, reference) = COMPARISONS.iter().find(|c| c.0 == name)?;
+    let parse = |text: &str| Variant::parse(text).expect("built-in variants are well formed");
+    let reference = match *reference {
+        "" => vec![],
+        edits => parse(&format!("reference:{edits}")).edits,
+    };
+    Some((variants.iter().map(|t| parse(t)).collect(), reference))
+}
 
 #[cfg(test)]
 mod tests {
@@ -260,7 +260,7 @@ mod tests {
 
     #[test]
     fn every_comparison_is_defined() {
-        for name in COMPARISONS {
+        for name in comparison_names() {
             let (variants, _) = comparison(name).unwrap();
             assert!(variants.len() >= 2, "{name}");
         }

@@ -1,0 +1,128 @@
+//! `raycourse animate <stage>`: the camera's move, the eye rising around the point
+//! it looks at, as an animated GIF or numbered PNG frames.
+
+use std::num::NonZeroU32;
+use std::path::Path;
+use std::time::Instant;
+
+use clap::builder::PossibleValuesParser;
+use clap::{ArgMatches, FromArgMatches, Parser};
+use image::codecs::gif::{GifEncoder, Repeat};
+use image::{Delay, Frame, RgbaImage};
+use raycourse::maths::Real;
+use raycourse::{Overrides, encode_png, find_stage, scene_file::stage_names};
+
+use crate::commands::Verb;
+use crate::commands::failure::Failure;
+use crate::commands::options::RenderArgs;
+use crate::commands::output::{timed_render, write};
+
+/// Render a stage's camera move, the eye rising around the point it looks at,
+/// into an animated GIF (or numbered PNG frames if `--out` ends in `.png`).
+#[derive(Parser)]
+#[command(name = "animate")]
+struct AnimateArgs {
+    /// The stage (its camera must have a `look_at` point).
+    #[arg(value_parser = PossibleValuesParser::new(stage_names(7)))]
+    stage: String,
+    /// Number of frames.
+    #[arg(long, default_value = "24")]
+    frames: NonZeroU32,
+    /// Plunge angle of the first frame, degrees.
+    #[arg(long, default_value_t = 0.0)]
+    from: Real,
+    /// Plunge angle of the last frame, degrees.
+    #[arg(long, default_value_t = 30.0)]
+    to: Real,
+    #[command(flatten)]
+    options: RenderArgs,
+}
+
+/// The `animate` command (session 7: the aimed camera).
+pub const VERB: Verb = Verb {
+    session: 7,
+    command: <AnimateArgs as clap::CommandFactory>::command,
+    run,
+};
+
+fn run(matches: &ArgMatches) -> Result<(), Failure> {
+    let args = AnimateArgs::from_arg_matches(matches)?;
+    animate(
+        &args.stage,
+        args.frames.get(),
+        (args.from, args.to),
+        &args.options,
+    )
+}
+
+/// The plunge angle of frame `k` of `frames`, from `angles.0` to `angles.1`.
+fn angle(k: u32, frames: u32, angles: (Real, Real)) -> Real {
+    let step = if frames > 1 {
+        k as Real / (frames - 1) as Real
+    } else {
+        0.0
+    };
+    angles.0 + (angles.1 - angles.0) * step
+}
+
+/// Renders `frames` frames of stage `name` with the plunge angle going from
+/// `angles.0` to `angles.1`, into a looping GIF or numbered PNG files.
+fn animate(
+    name: &str,
+    frames: u32,
+    angles: (Real, Real),
+    options: &RenderArgs,
+) -> Result<(), Failure> {
+    let stage = find_stage(7, name).expect("clap only accepts stages of session 7");
+    let out = options
+        .out
+        .clone()
+        .unwrap_or_else(|| Path::new("out").join(format!("{name}.gif")));
+    let as_png = out.extension().is_some_and(|e| e == "png");
+    let mut gif = Vec::new();
+    let mut encoder = (!as_png).then(|| GifEncoder::new_with_speed(&mut gif, 10));
+    if let Some(encoder) = encoder.as_mut() {
+        encoder.set_repeat(Repeat::Infinite).map_err(gif_failure)?;
+    }
+    let start = Instant::now();
+    for k in 0..frames {
+        let overrides = Overrides {
+            plunge: Some(angle(k, frames, angles)),
+            ..options.overrides()
+        };
+        let scene = stage.scene(&overrides)?;
+        let label = format!("{name} frame {}/{frames}", k + 1);
+        let timed = timed_render(&label, &scene, options)?;
+        let png = encode_png(&timed.result.film, scene.settings.gamma);
+        if let Some(encoder) = encoder.as_mut() {
+            let rgb = image::load_from_memory(&png).expect("the PNG was just encoded");
+            let delay = Delay::from_numer_denom_ms(100, 1);
+            let frame = Frame::from_parts(RgbaImage::from(rgb.to_rgba8()), 0, 0, delay);
+            encoder.encode_frame(frame).map_err(gif_failure)?;
+        } else {
+            let stem = out.file_stem().unwrap_or_default().to_string_lossy();
+            write(&out.with_file_name(format!("{stem}-{k:03}.png")), &png)?;
+        }
+        if !options.quiet {
+            eprintln!("{label}: {:.2} s", timed.seconds);
+        }
+    }
+    let animated = encoder.is_some();
+    drop(encoder);
+    if animated {
+        write(&out, &gif)?;
+    }
+    println!(
+        "{name}: {frames} frames, plunge {} to {} degrees, {:.1} s -> {}",
+        angles.0,
+        angles.1,
+        start.elapsed().as_secs_f64(),
+        out.display()
+    );
+    Ok(())
+}
+
+/// The failure of a GIF that could not be encoded.
+fn gif_failure(error: image::ImageError) -> Failure {
+    Failure::Machine(format!("cannot encode the animation: {error}"))
+}

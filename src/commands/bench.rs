@@ -1,0 +1,72 @@
+//! `raycourse bench`: the stages at the course's settings, timed, beside the times
+//! the course reported on its own machine.
+
+use std::num::NonZeroUsize;
+
+use clap::{ArgMatches, FromArgMatches, Parser};
+use raycourse::{Overrides, stages};
+
+use crate::commands::Verb;
+use crate::commands::failure::Failure;
+use crate::commands::options::RenderArgs;
+use crate::commands::output::timed_render;
+
+/// Render the stages at the course's settings and print a table of their times
+/// beside the course's own (every stage of this build, or those of the sessions
+/// given).
+#[derive(Parser)]
+#[command(name = "bench")]
+struct BenchArgs {
+    /// Sessions whose stages are timed (default: all of this build's).
+    sessions: Vec<u32>,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    threads: Option<NonZeroUsize>,
+}
+
+/// The `bench` command.
+pub const VERB: Verb = Verb {
+    session: 1,
+    command: <BenchArgs as clap::CommandFactory>::command,
+    run,
+};
+
+/// The time the course reported for the stage of figure `figure` on its own machine.
+fn course_time(figure: Option<u32>) -> &'static str {
+    match figure {
+        Some(1..=7) => "under 1 s",
+        Some(8..=9) => "under 10 s",
+        Some(11) => "about 15 s",
+        Some(13) => "35 s",
+        Some(14) => "15 s",
+        Some(15..=18) => "about 60 s",
+        _ => "-",
+    }
+}
+
+fn run(matches: &ArgMatches) -> Result<(), Failure> {
+    let args = BenchArgs::from_arg_matches(matches)?;
+    let options = RenderArgs {
+        threads: args.threads,
+        quiet: true,
+        ..RenderArgs::default()
+    };
+    println!("| stage | settings | time | rays | Mrays/s | course |");
+    println!("|---|---|---|---|---|---|");
+    let chosen = |session: u32| args.sessions.is_empty() || args.sessions.contains(&session);
+    for stage in stages().filter(|s| chosen(s.session)) {
+        let scene = stage.scene(&Overrides::default())?;
+        let timed = timed_render(stage.name, &scene, &options)?;
+        println!(
+            "| `{}` ({}) | {} | {:.2} s | {} | {:.2} | {} |",
+            stage.name,
+            stage.figure.map_or("-".into(), |f| f.to_string()),
+            scene.summary(),
+            timed.seconds,
+            timed.result.rays,
+            timed.result.rays as f64 / timed.seconds / 1e6,
+            course_time(stage.figure)
+        );
+    }
+    Ok(())
+}

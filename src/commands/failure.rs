@@ -1,0 +1,50 @@
+//! What can go wrong when a command runs, and its exit code.
+
+use std::path::Path;
+
+/// Why a command failed: its input (exit code 2, as for clap's usage errors) or the
+/// machine (exit code 1). The message is one line that says what and where.
+#[derive(Debug, thiserror::Error)]
+pub enum Failure {
+    /// A scene, a file or an argument that cannot be used.
+    #[error("{0}")]
+    Input(String),
+    /// Something the machine could not do: start threads, write a file.
+    #[error("{0}")]
+    Machine(String),
+}
+
+impl Failure {
+    /// A bad input, described by `error`.
+    pub fn input(error: impl std::fmt::Display) -> Failure {
+        Failure::Input(error.to_string())
+    }
+
+    /// The file at `path` that could not be written.
+    pub fn write(path: &Path, error: std::io::Error) -> Failure {
+        Failure::Machine(format!(
+            "{}: cannot write the file: {error}",
+            path.display()
+        ))
+    }
+
+    /// The exit code: 2 for bad input, 1 for a failure of the machine.
+    pub fn exit_code(&self) -> std::process::ExitCode {
+        match self {
+            Failure::Input(_) => std::process::ExitCode::from(2),
+            Failure::Machine(_) => std::process::ExitCode::FAILURE,
+        }
+    }
+}
+
+impl From<raycourse::SceneError> for Failure {
+    fn from(error: raycourse::SceneError) -> Failure {
+        Failure::input(error)
+    }
+}
+
+impl From<clap::Error> for Failure {
+    fn from(error: clap::Error) -> Failure {
+        Failure::input(error)
+    }
+}

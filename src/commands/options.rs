@@ -1,0 +1,61 @@
+//! The options of a render, shared by every command that renders.
+
+use std::num::{NonZeroU32, NonZeroUsize};
+use std::path::PathBuf;
+
+use clap::Args;
+use raycourse::Overrides;
+
+use crate::commands::failure::Failure;
+
+/// Settings that replace the scene file's for one render.
+#[derive(Args, Clone, Debug, Default)]
+pub struct RenderArgs {
+    /// Image width in pixels.
+    #[arg(long)]
+    pub width: Option<NonZeroU32>,
+    /// Image height in pixels.
+    #[arg(long)]
+    pub height: Option<NonZeroU32>,
+    /// Samples per pixel.
+    #[arg(long)]
+    pub spp: Option<NonZeroU32>,
+    /// Bounce limit for mirrors, glass and indirect light.
+    #[arg(long)]
+    pub bounces: Option<u32>,
+    /// Seed of the random generators.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    pub threads: Option<NonZeroUsize>,
+    /// Output PNG (default: out/<name>.png).
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// Hide the progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+impl RenderArgs {
+    /// The scene-file settings these options replace.
+    pub fn overrides(&self) -> Overrides {
+        Overrides {
+            width: self.width,
+            height: self.height,
+            samples: self.spp,
+            bounces: self.bounces,
+            seed: self.seed,
+            plunge: None,
+        }
+    }
+}
+
+/// A thread pool of `threads` workers, one per core if `None`.
+pub fn thread_pool(threads: Option<NonZeroUsize>) -> Result<rayon::ThreadPool, Failure> {
+    let threads = threads.map_or(0, NonZeroUsize::get);
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| Failure::Machine(format!("cannot start {threads} worker threads: {e}")))
+}

@@ -1,0 +1,87 @@
+//! What a render shows and leaves: a progress bar on stderr, a closing line, and
+//! files written whole or not at all.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use raycourse::{Render, Scene, encode_png, render::render_reporting};
+
+use crate::commands::failure::Failure;
+use crate::commands::options::{RenderArgs, thread_pool};
+
+/// A progress bar of `length` steps labelled `label`, hidden when `quiet` (and by
+/// indicatif when stderr is not a terminal).
+pub fn progress_bar(length: u64, label: &str, quiet: bool) -> ProgressBar {
+    if quiet {
+        return ProgressBar::hidden();
+    }
+    let style = ProgressStyle::with_template("{msg} [{bar:40}] {percent}%, {eta} left")
+        .expect("the template is valid")
+        .progress_chars("=> ");
+    ProgressBar::new(length)
+        .with_style(style)
+        .with_message(label.to_owned())
+}
+
+/// A render and how it went.
+pub struct Timed {
+    /// The film and the rays it took.
+    pub result: Render,
+    /// Wall-clock seconds.
+    pub seconds: f64,
+    /// Worker threads.
+    pub threads: usize,
+}
+
+/// Renders `scene` on `options.threads` threads with a progress bar (unless quiet).
+pub fn timed_render(label: &str, scene: &Scene, options: &RenderArgs) -> Result<Timed, Failure> {
+    let pool = thread_pool(options.threads)?;
+    let samples = u64::from(scene.settings.samples);
+    let bar = progress_bar(
+        u64::from(scene.camera.height) * samples,
+        label,
+        options.quiet,
+    );
+    let start = Instant::now();
+    let result = pool.install(|| render_reporting(scene, &|done| bar.inc(done)));
+    let seconds = start.elapsed().as_secs_f64();
+    bar.finish_and_clear();
+    Ok(Timed {
+        result,
+        seconds,
+        threads: pool.current_num_threads(),
+    })
+}
+
+/// Writes `bytes` to `path` without leaving half a file.
+pub fn write(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
+    raycourse::render::write_atomically(path, bytes).map_err(|e| Failure::write(path, e))
+}
+
+/// Renders `scene` into a PNG (`options.out`, or `default_out`) and prints the
+/// closing line: settings, time, rays and Mrays/s.
+pub fn render_to_file(
+    label: &str,
+    scene: &Scene,
+    options: &RenderArgs,
+    default_out: PathBuf,
+) -> Result<(), Failure> {
+    let out = options.out.clone().unwrap_or(default_out);
+    let timed = timed_render(label, scene, options)?;
+    write(&out, &encode_png(&timed.result.film, scene.settings.gamma))?;
+    let dropped = match timed.result.dropped {
+        0 => String::new(),
+        n => format!(", {n} non-finite samples dropped"),
+    };
+    println!(
+        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{dropped} -> {}",
+        scene.summary(),
+        timed.seconds,
+        timed.result.rays,
+        timed.result.rays as f64 / timed.seconds / 1e6,
+        timed.threads,
+        out.display()
+    );
+    Ok(())
+}

@@ -1,0 +1,237 @@
+//! `raycourse plot <csv...>`: the rows of convergence studies on one log-log plot,
+//! drawn with plotters into a PNG. The font is built in, so plotting needs no
+//! system fonts.
+
+use std::path::PathBuf;
+use std::sync::Once;
+
+use clap::{ArgMatches, FromArgMatches, Parser};
+use plotters::prelude::*;
+use plotters::style::FontStyle;
+use raycourse::maths::to_double;
+use raycourse::render::png::encode_rgb8;
+use raycourse::studies::convergence::{Rung, read_rungs};
+
+use crate::commands::Verb;
+use crate::commands::failure::Failure;
+use crate::commands::output::write;
+
+/// Plot the rows of one or more CSV files written by `converge` on one log-log
+/// plot (for instance the same study from the double- and single-precision
+/// builds).
+#[derive(Parser)]
+#[command(name = "plot")]
+struct PlotArgs {
+    /// The CSV files.
+    #[arg(required = true)]
+    csv: Vec<PathBuf>,
+    /// The PNG to write.
+    #[arg(long)]
+    out: PathBuf,
+    /// The plot's title.
+    #[arg(long, default_value = "")]
+    title: String,
+}
+
+/// The `plot` command.
+pub const VERB: Verb = Verb {
+    session: 3,
+    command: <PlotArgs as clap::CommandFactory>::command,
+    run,
+};
+
+fn run(matches: &ArgMatches) -> Result<(), Failure> {
+    let args = PlotArgs::from_arg_matches(matches)?;
+    let mut rungs = vec![];
+    for path in &args.csv {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| Failure::Input(format!("{}: cannot read: {e}", path.display())))?;
+        let rows =
+            read_rungs(&text).map_err(|m| Failure::Input(format!("{}: {m}", path.display())))?;
+        rungs.extend(rows);
+    }
+    let png = plot_rungs(&args.title, &rungs)
+        .ok_or_else(|| Failure::Input("no row has an error above 0: nothing to plot".into()))?;
+    write(&args.out, &png)?;
+    println!("{} rows -> {}", rungs.len(), args.out.display());
+    Ok(())
+}
+
+/// Width and height of a plot, in pixels: two panels side by side.
+const SIZE: (u32, u32) = (1200, 500);
+
+/// DejaVu Sans (see `assets/fonts/DejaVuSans.LICENSE`).
+const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+
+/// Makes the built-in font plotters' `sans-serif`, once.
+fn register_font() {
+    static REGISTER: Once = Once::new();
+    REGISTER.call_once(|| {
+        plotters::style::register_font("sans-serif", FontStyle::Normal, FONT)
+            .unwrap_or_else(|_| panic!("the built-in font is a valid TrueType font"));
+    });
+}
+
+/// A plot's drawing area: one panel.
+type Area<'a> = DrawingArea<BitMapBackend<'a>, plotters::coord::Shift>;
+
+/// One variant's points on a panel: its label and `(x, RMSE)` pairs.
+type Line<'a> = (&'a str, Vec<(f64, f64)>);
+
+// ANCHOR: plot
+/// A PNG of the rungs' RMSE against samples per pixel (left) and against seconds
+/// (right), both axes logarithmic, one line per variant in order of appearance, and
+/// a grey guide of slope -1/2, the rate of an unbiased Monte Carlo estimate. Rungs
+/// with no error (an exact image) have no logarithm and are left out; `None` when
+/// no rung is left.
+pub fn plot_rungs(title: &str, rungs: &[Rung]) -> Option<Vec<u8>> {
+    let shown: Vec<&Rung> = rungs.iter().filter(|r| r.error.rmse > 0.0).collect();
+    if shown.is_empty() {
+        return None;
+    }
+    register_font();
+    let samples = |r: &Rung| f64::from(r.samples);
+    let seconds = |r: &Rung| to_double(r.seconds).max(1e-4);
+    let mut pixels = vec![0u8; (SIZE.0 * SIZE.1 * 3) as usize];
+    {
+        let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
+        root.fill(&WHITE).ok()?;
+        let root = root.titled(title, ("sans-serif", 24)).ok()?;
+        let (left, right) = root.split_horizontally(SIZE.0 / 2);
+        draw_panel(&left, &lines(&shown, &samples), "samples per pixel")?;
+        draw_panel(&right, &lines(&shown, &seconds), "seconds")?;
+        root.present().ok()?;
+    }
+    Some(encode_rgb8(&pixels, SIZE.0, SIZE.1))
+}
+// ANCHOR_END: plot
+
+/// The rungs as one line per variant, in order of appearance, with `x_of` as `x`.
+fn lines<'a>(shown: &[&'a Rung], x_of: &dyn Fn(&Rung) -> f64) -> Vec<Line<'a>> {
+    let mut lines: Vec<Line> = vec![];
+    for rung in shown {
+        let point = (x_of(rung), to_double(rung.error.rmse));
+        match lines.iter_mut().find(|(label, _)| *label == rung.variant) {
+            Some((_, points)) => points.push(point),
+            None => lines.push((&rung.variant, vec![point])),
+        }
+    }
+    lines
+}
+
+/// The range of a logarithmic axis holding `values`, with some room around them.
+fn axis(values: impl Iterator<Item = f64> + Clone) -> std::ops::Range<f64> {
+    let low = values.clone().fold(f64::INFINITY, f64::min);
+    let high = values.fold(0.0, f64::max);
+    low / 1.5..high * 1.5
+}
+
+/// Draws `lines` on `area`: log-log axes, a guide of slope -1/2 through the first
+/// line's first point, each line in its own colour, and the legend.
+fn draw_panel(area: &Area, lines: &[Line], x_name: &str) -> Option<()> {
+    let points = || lines.iter().flat_map(|(_, p)| p.iter().copied());
+    let (x_range, y_range) = (axis(points().map(|p| p.0)), axis(points().map(|p| p.1)));
+    let mut chart = ChartBuilder::on(area)
+        .margin(16)
+        .x_label_area_size(44)
+        .y_label_area_size(72)
+        .build_cartesian_2d(x_range.clone().log_scale(), y_range.log_scale())
+        .ok()?;
+    chart
+        .configure_mesh()
+        .x_label_formatter(&|v| tick(*v))
+        .y_label_formatter(&|v| tick(*v))
+        .x_desc(x_name)
+        .y_desc("RMSE (linear radiance)")
+        .label_style(("sans-serif", 15))
+        .draw()
+        .ok()?;
+    let (x0, y0) = lines[0].1[0];
+    let guide = [x_range.start, x_range.end].map(|x| (x, y0 * (x / x0).powf(-0.5)));
+    let grey = RGBColor(150, 150, 150);
+    chart
+        .draw_series(DashedLineSeries::new(guide, 6, 4, grey.stroke_width(1)))
+        .ok()?
+        .label("slope -1/2")
+        .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], grey));
+    for (i, (label, points)) in lines.iter().enumerate() {
+        let colour = Palette99::pick(i).to_rgba();
+        chart
+            .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))
+            .ok()?
+            .label(*label)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 24, y)], colour.stroke_width(2))
+            });
+        chart
+            .draw_series(points.iter().map(|p| Circle::new(*p, 4, colour.filled())))
+            .ok()?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .label_font(("sans-serif", 15))
+        .background_style(WHITE.mix(0.9))
+        .border_style(BLACK)
+        .draw()
+        .ok()
+}
+
+/// A tick label: plain for everyday magnitudes, `1e5` style otherwise.
+fn tick(v: f64) -> String {
+    if (0.01..10_000.0).contains(&v) {
+        format!("{}", (v * 1e4).round() / 1e4)
+    } else {
+        format!("{v:.0e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raycourse::maths::Real;
+    use raycourse::studies::convergence::ImageError;
+
+    fn rung(variant: &str, samples: u32, rmse: Real) -> Rung {
+        Rung {
+            variant: variant.into(),
+            samples,
+            seconds: samples as Real * 0.01,
+            error: ImageError { rmse, rel_mse: 0.0 },
+        }
+    }
+
+    #[test]
+    fn plots_are_pngs_of_the_plot_size_with_two_colours_of_lines() {
+        let rungs: Vec<Rung> = [1, 2, 4, 8]
+            .iter()
+            .flat_map(|&n| [rung("a", n, 1.0 / n as Real), rung("b", n, 2.0 / n as Real)])
+            .collect();
+        let png = plot_rungs("test", &rungs).unwrap();
+        let image = image::load_from_memory(&png).unwrap().to_rgb8();
+        assert_eq!(image.dimensions(), SIZE);
+        let colour = |i: usize| {
+            let c = Palette99::pick(i).to_rgba();
+            [c.0, c.1, c.2]
+        };
+        for i in 0..2 {
+            let count = image.pixels().filter(|p| p.0 == colour(i)).count();
+            assert!(count > 500, "variant {i}: {count} pixels of its colour");
+        }
+        let text = image.pixels().filter(|p| p.0 == [0, 0, 0]).count();
+        assert!(text > 1000, "{text} black pixels: labels and frames drawn");
+    }
+
+    #[test]
+    fn tick_labels_are_short() {
+        assert_eq!(tick(100000.0), "1e5");
+        assert_eq!(tick(20.0), "20");
+        assert_eq!(tick(0.1), "0.1");
+        assert_eq!(tick(0.001), "1e-3");
+    }
+
+    #[test]
+    fn exact_images_have_no_plot() {
+        assert_eq!(plot_rungs("exact", &[rung("a", 1, 0.0)]), None);
+    }
+}

@@ -1,0 +1,38 @@
+//! `raycourse render <scene.toml>`: any scene file.
+
+use std::path::{Path, PathBuf};
+
+use clap::{ArgMatches, FromArgMatches, Parser};
+
+use crate::commands::Verb;
+use crate::commands::failure::Failure;
+use crate::commands::options::RenderArgs;
+use crate::commands::output::render_to_file;
+
+/// Render a scene file.
+#[derive(Parser)]
+#[command(name = "render")]
+struct RenderFile {
+    /// The scene file (TOML).
+    scene: PathBuf,
+    #[command(flatten)]
+    options: RenderArgs,
+}
+
+/// The `render` command.
+pub const VERB: Verb = Verb {
+    session: 1,
+    command: <RenderFile as clap::CommandFactory>::command,
+    run,
+};
+
+fn run(matches: &ArgMatches) -> Result<(), Failure> {
+    let args = RenderFile::from_arg_matches(matches)?;
+    let scene = raycourse::load_scene(&args.scene, &args.options.overrides())?;
+    let name = args
+        .scene
+        .file_stem()
+        .map_or("scene".into(), |s| s.to_string_lossy());
+    let out = Path::new("out").join(format!("{name}.png"));
+    render_to_file(&name, &scene, &args.options, out)
+}

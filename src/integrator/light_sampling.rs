@@ -1,0 +1,71 @@
+//! Direct light from a sphere light, by sampling the cone of directions it is seen
+//! under.
+
+use crate::geometry::{Hit, Ray};
+use crate::integrator::Tracer;
+use crate::lights::{Light, SphereLight};
+use crate::maths::{Colour, PI, uniform};
+
+impl Tracer<'_> {
+    // ANCHOR: sphere_light
+    /// Light from a sphere light reflected by a diffuse surface: sampled when the
+    /// scene asks for light sampling; otherwise only indirect rays that happen to
+    /// hit the light bring its light.
+    pub fn sphere_light(&mut self, light: &SphereLight, hit: &Hit, albedo: Colour) -> Colour {
+        if self.scene.settings.light_sampling {
+            self.sample_light(light, hit, albedo)
+        } else {
+            Colour::ZERO
+        }
+    }
+    // ANCHOR_END: sphere_light
+
+    // ANCHOR: light_sampling
+    /// Light arriving straight from the sphere light at a diffuse point, estimated
+    /// with one direction sampled towards the light:
+    /// `L = Le (albedo / pi) cos(theta) / pdf(w)`, 0 when an object is in the way.
+    pub fn sample_light(&mut self, light: &SphereLight, hit: &Hit, albedo: Colour) -> Colour {
+        let (u1, u2) = (uniform(&mut self.rng), uniform(&mut self.rng));
+        let Some((direction, pdf)) = light.sample(hit.point, u1, u2) else {
+            return Colour::ZERO;
+        };
+        let cos = direction.dot(hit.normal);
+        if cos <= 0.0 {
+            return Colour::ZERO;
+        }
+        match self.trace(&hit.spawn(direction)) {
+            Some(seen) if seen.object == light.object => light.emission * albedo / PI * cos / pdf,
+            _ => Colour::ZERO,
+        }
+    }
+    // ANCHOR_END: light_sampling
+
+    // ANCHOR: indirect_skipping
+    /// [`Tracer::indirect_light`] as session 3 has it, but with light sampling the
+    /// bounced ray does not count the glow of the light already sampled at this
+    /// point: it would be counted twice.
+    pub fn indirect_light(&mut self, hit: &Hit, albedo: Colour, bounces: u32) -> Colour {
+        let skip = match self.scene.light {
+            Some(Light::Sphere(light)) if self.scene.settings.light_sampling => Some(light.object),
+            _ => None,
+        };
+        self.bounce(bounces, |tracer, next| {
+            let direction = tracer.cosine_direction(hit);
+            albedo * tracer.radiance_skipping(&hit.spawn(direction), next, skip)
+        })
+    }
+
+    /// [`Tracer::radiance`], but the glow of object `skip` is not counted.
+    pub fn radiance_skipping(&mut self, ray: &Ray, bounces: u32, skip: Option<usize>) -> Colour {
+        let Some(hit) = self.trace(ray) else {
+            return Colour::ZERO;
+        };
+        let reflected = self.reflected(ray, &hit, bounces);
+        if skip == Some(hit.object) {
+            reflected
+        } else {
+            hit.emission + reflected
+        }
+    }
+    // ANCHOR_END: indirect_skipping
+}

@@ -1,0 +1,27 @@
+//! What session 6 adds to a scene file: bounding volume hierarchies and smooth
+//! normals.
+
+use std::sync::Arc;
+
+use crate::acceleration::{Bvh, FastBvh};
+use crate::scene::Scene;
+use crate::scene_file::format::{AccelerationSpec, SceneFile};
+
+/// Adds to `scene` what session 6 reads in `file`: each mesh searched through a
+/// hierarchy when `render.acceleration` asks for one (the course's, or the fast one
+/// with leaves of at most `render.leaf_size` triangles, 8 by default), and shaded
+/// with its vertex normals only where `smooth_normals` says so.
+pub fn add(file: &SceneFile, mut scene: Scene) -> Scene {
+    let leaf_size = file.render.leaf_size.map_or(8, |l| l.get());
+    for (mesh, spec) in scene.meshes.iter_mut().zip(&file.meshes) {
+        match file.render.acceleration {
+            AccelerationSpec::Bvh => mesh.search = Arc::new(Bvh::build(mesh)),
+            AccelerationSpec::Fast => mesh.search = Arc::new(FastBvh::build(mesh, leaf_size)),
+            AccelerationSpec::None | AccelerationSpec::Bbox => {}
+        }
+        if !spec.smooth_normals {
+            mesh.normals.clear();
+        }
+    }
+    scene
+}

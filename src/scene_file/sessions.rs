@@ -1,0 +1,151 @@
+//! What each session adds to the scene file format, and the error for a scene that
+//! asks for more than this build has: "a mirror material needs feature s2".
+
+use std::path::Path;
+
+use crate::scene_file::SceneError;
+use crate::scene_file::features::{SESSION, feature_name};
+use crate::scene_file::format::{AccelerationSpec, SceneFile};
+
+/// The materials of later sessions, by their name in a scene file: the session that
+/// teaches each and what it is.
+const MATERIALS: &[(&str, u32, &str)] = &[
+    ("mirror", 2, "a mirror material"),
+    ("glass", 2, "a glass material"),
+    ("fresnel-glass", 4, "a Fresnel glass material"),
+];
+
+/// `Ok` if this build has `session`, else the error naming its feature.
+pub fn require(path: &Path, key: &str, session: u32, what: &str) -> Result<(), SceneError> {
+    if session <= SESSION {
+        Ok(())
+    } else {
+        Err(SceneError::NeedsFeature {
+            path: path.to_owned(),
+            key: key.to_owned(),
+            what: what.to_owned(),
+            feature: feature_name(session),
+        })
+    }
+}
+
+/// Checks the materials of scene-file text `source` before it is read as a scene:
+/// a material of a later session is not a variant this build can read, so it is
+/// named here. Text that is not valid TOML is left to the reader, which reports
+/// where.
+pub fn check_materials(source: &str, path: &Path) -> Result<(), SceneError> {
+    let Ok(file) = source.parse::<toml::Table>() else {
+        return Ok(());
+    };
+    let spheres = file.get("spheres").and_then(toml::Value::as_array);
+    for (i, sphere) in spheres.into_iter().flatten().enumerate() {
+        let kind = match sphere.get("material") {
+            Some(toml::Value::String(name)) => name.as_str(),
+            Some(toml::Value::Table(table)) if table.len() == 1 => table.keys().next().unwrap(),
+            _ => continue,
+        };
+        if let Some(&(_, session, what)) = MATERIALS.iter().find(|m| m.0 == kind) {
+            require(path, &format!("spheres[{i}].material"), session, what)?;
+        }
+    }
+    Ok(())
+}
+
+/// A key of the scene file that a session brings: whether a file uses it, its
+/// dotted name, the session and what it is.
+type SessionKey = (fn(&SceneFile) -> bool, &'static str, u32, &'static str);
+
+/// The keys that sessions 2 to 7 bring, in course order.
+const KEYS: &[SessionKey] = &[
+    (
+        |f| f.render.gamma.is_some(),
+        "render.gamma",
+        2,
+        "gamma correction",
+    ),
+    (|f| f.render.shadows, "render.shadows", 2, "shadow rays"),
+    (
+        |f| f.render.indirect,
+        "render.indirect",
+        3,
+        "indirect lighting",
+    ),
+    (
+        |f| f.camera.antialiasing.is_some(),
+        "camera.antialiasing",
+        3,
+        "antialiasing",
+    ),
+    (
+        |f| f.render.light_sampling,
+        "render.light_sampling",
+        4,
+        "light sampling",
+    ),
+    (
+        |f| f.render.russian_roulette.is_some(),
+        "render.russian_roulette",
+        4,
+        "Russian roulette",
+    ),
+    (|f| f.camera.lens.is_some(), "camera.lens", 4, "a thin lens"),
+    (
+        |f| f.light.as_ref().is_some_and(|l| l.radius.is_some()),
+        "light.radius",
+        4,
+        "a sphere light",
+    ),
+    (|f| !f.meshes.is_empty(), "meshes", 5, "triangle meshes"),
+    (
+        |f| f.render.acceleration != AccelerationSpec::None,
+        "render.acceleration",
+        5,
+        "an acceleration structure",
+    ),
+    (
+        |f| f.render.triangle_test.is_some(),
+        "render.triangle_test",
+        5,
+        "triangle meshes",
+    ),
+    (
+        |f| {
+            matches!(
+                f.render.acceleration,
+                AccelerationSpec::Bvh | AccelerationSpec::Fast
+            )
+        },
+        "render.acceleration",
+        6,
+        "a bounding volume hierarchy",
+    ),
+    (
+        |f| f.camera.look_at.is_some() || f.camera.up.is_some() || f.camera.plunge.is_some(),
+        "camera.look_at",
+        7,
+        "an aimed camera",
+    ),
+];
+
+/// Checks that every key `file` uses belongs to a session this build has.
+pub fn check_sessions(file: &SceneFile, path: &Path) -> Result<(), SceneError> {
+    for (used, key, session, what) in KEYS {
+        if used(file) {
+            require(path, key, *session, what)?;
+        }
+    }
+    for (i, mesh) in file.meshes.iter().enumerate() {
+        if mesh.smooth_normals {
+            require(
+                path,
+                &format!("meshes[{i}].smooth_normals"),
+                6,
+                "smooth normals",
+            )?;
+        }
+        if mesh.textured || mesh.texture.is_some() || mesh.texture_filter.is_some() {
+            require(path, &format!("meshes[{i}].textured"), 7, "textures")?;
+        }
+    }
+    Ok(())
+}
