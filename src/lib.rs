@@ -36,7 +36,7 @@
 //! | `acceleration` | the bounding box, the bounding volume hierarchy | 5, 6 |
 //! | [`scene`] | everything a render needs, and the nearest hit | 1, 2, 5 |
 //! | [`integrator`] | `radiance`: the light arriving along a ray | 1 to 4 |
-//! | [`render`] | every pixel, in parallel; the film; PNG files | 1, 3 |
+//! | [`render`](mod@render) | every pixel, in parallel; the film; PNG files | 1, 3 |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
 //! | `studies` | error against samples and time, scale sweeps, ray sets | 3, 6 |
 //!

@@ -48,7 +48,7 @@ fn every_bad_input_fails_cleanly_and_writes_nothing() {
     let image = out.path().join("keep.png");
     std::fs::write(&image, b"an earlier image").unwrap();
     let cases = corpus(&dir);
-    assert!(cases.len() >= 40, "{} cases", cases.len());
+    assert!(cases.len() >= 30, "{} cases", cases.len());
     let mut ran = 0;
     for case in cases.iter().filter(|c| c.session <= SESSION) {
         let output = run(

@@ -10,7 +10,14 @@ use std::path::Path;
 use proptest::prelude::*;
 use raycourse::{Overrides, parse_scene};
 
-const SCENE: &str = include_str!("../sessions/s4/depth-of-field.toml");
+/// The scene file whose edits are tried: the last stage of the build, which uses
+/// the most keys.
+fn scene() -> &'static str {
+    raycourse::stages()
+        .last()
+        .expect("every build has stages")
+        .source
+}
 
 /// Cases per property: `FUZZ_CASES`, or `default`.
 fn cases(default: u32) -> ProptestConfig {
@@ -75,7 +82,7 @@ proptest! {
     fn edited_scene_files_never_panic(
         edits in prop::collection::vec((0.0..1.0f64, 0..40usize, any::<u8>(), any::<u8>(), any::<usize>()), 1..6)
     ) {
-        let mut text = SCENE.to_owned();
+        let mut text = scene().to_owned();
         for (at, len, kind, byte, number) in edits {
             text = edit(&text, at, len, kind, byte, number);
         }

@@ -324,7 +324,7 @@ impl Search for FastBvh {
 
     // ANCHOR: fast_traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`: the same
-    /// hit as [`Bvh::intersect`] (equal distances go to the lower triangle index).
+    /// hit as the course's [`Bvh`] (equal distances go to the lower triangle index).
     /// Of the children a ray enters, the nearest is visited next and the others wait
     /// on the stack, nearer ones on top; a child is skipped when popped if a hit
     /// found meanwhile is closer than its box. In a leaf, only the triangles the

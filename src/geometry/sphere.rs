@@ -6,6 +6,7 @@ use crate::geometry::{Hit, Ray};
 use crate::materials::Material;
 use crate::maths::{Colour, Real, Vec3, error_bound};
 
+// ANCHOR: sphere
 /// A sphere of centre `centre`, radius `radius`, made of `material`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sphere {
@@ -19,6 +20,7 @@ pub struct Sphere {
     /// objects): the white disk of figure 1 glows, and so will session 4's light.
     pub emission: Colour,
 }
+// ANCHOR_END: sphere
 
 impl Sphere {
     // ANCHOR: intersect

@@ -51,6 +51,7 @@ impl Texture {
         })
     }
 
+    // ANCHOR: texel
     /// The texel at integer coordinates, wrapped around both ways so that the
     /// texture repeats: `-1` is the last column, `width` the first.
     pub fn texel(&self, x: i64, y: i64) -> Colour {
@@ -58,6 +59,7 @@ impl Texture {
         let y = y.rem_euclid(i64::from(self.height)) as usize;
         self.texels[y * self.width as usize + x]
     }
+    // ANCHOR_END: texel
 
     // ANCHOR: lookup
     /// The albedo at texture coordinates `(u, v)`: `u` runs left to right, `v`

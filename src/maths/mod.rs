@@ -3,6 +3,7 @@
 //! | file | session | what it holds |
 //! |---|---|---|
 //! | [`numbers`] | 1 | `Real`, `Vec3`, `Colour`: the number types, named once |
+//! | [`double`] | 1 | the types in double precision (`single`: with the `f32` feature) |
 //! | [`values`] | 1 | numbers read from scene files, checked against their rule |
 //! | [`random`] | 1 | one random generator per pixel |
 //! | [`sampling`] | 3 | random directions and offsets, each beside its density |
@@ -10,6 +11,11 @@
 
 pub mod numbers;
 pub mod random;
+
+#[cfg(not(feature = "f32"))]
+pub mod double;
+#[cfg(feature = "f32")]
+pub mod single;
 pub mod values;
 
 #[cfg(feature = "s3")]

@@ -115,7 +115,7 @@ fn merge(models: &[tobj::Model], texture: Option<std::path::PathBuf>) -> Result<
 /// mistake is reported by its line in words a student knows: a vertex needs 3
 /// coordinates (4 with a weight, 6 with a colour), a texture coordinate 2, a normal
 /// 3, each a number; a face needs at least 3 corners, each naming a `v`, `vt` or
-/// `vn` line already read ([`check_face`]).
+/// `vn` line already read.
 pub fn check_lines(text: &str) -> Result<(), String> {
     let mut counts = [0i64; 3];
     for (number, line) in text.lines().enumerate() {

@@ -3,7 +3,7 @@
 //!
 //! | file | session | what it holds |
 //! |---|---|---|
-//! | [`format`] | 1 | every key of the format, for every session |
+//! | [`format`](mod@format) | 1 | every key of the format, for every session |
 //! | [`error`] | 1 | errors that name the file, the key and what was expected |
 //! | [`features`] | 1 | which session this build was compiled for |
 //! | [`sessions`] | 1 | which session brings each key: "needs feature s2" |
@@ -14,7 +14,7 @@
 //! | [`session5`] | 5 | triangle meshes |
 //! | [`session6`] | 6 | hierarchies and smooth normals |
 //! | [`session7`] | 7 | textures and the aimed camera |
-//! | [`stages`] | 1 | the course's stages, one scene file each |
+//! | [`stages`](mod@stages) | 1 | the course's stages, one scene file each |
 
 pub mod consistency;
 pub mod error;

@@ -6,7 +6,7 @@
 //! | file | session | what it holds |
 //! |---|---|---|
 //! | [`convergence`] | 3 | error against samples and time; efficiency |
-//! | [`reference`] | 3 | converged reference images, cached on disk |
+//! | [`reference`](mod@reference) | 3 | converged reference images, cached on disk |
 //! | [`variant`] | 3 | the same scene file with some keys changed |
 //! | [`scale`] | 3 | a scene made larger or smaller: rounding at every scale |
 //! | [`rayset`] | 6 | ray sets in the Embree benchmark's format, traced against a mesh |

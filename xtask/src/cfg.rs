@@ -1,0 +1,98 @@
+//! `cfg` predicates as a session view sees them: every `feature = "sN"` is known
+//! (true for the sessions the view holds), everything else is left as it was.
+
+use syn::Meta;
+use syn::punctuated::Punctuated;
+use syn::spanned::Spanned;
+
+use crate::source::Source;
+
+/// A predicate after the session features are replaced by what they are in the view.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Cfg {
+    /// Known: the code is kept (and its gate dropped) or removed.
+    Known(bool),
+    /// Not about sessions (such as `test` or `feature = "f32"`): kept as this text.
+    Other(String),
+}
+
+/// The session of `feature = "sN"`, if `meta` is one.
+fn session_feature(meta: &Meta) -> Option<u32> {
+    let Meta::NameValue(nv) = meta else {
+        return None;
+    };
+    if !nv.path.is_ident("feature") {
+        return None;
+    }
+    let syn::Expr::Lit(syn::ExprLit {
+        lit: syn::Lit::Str(name),
+        ..
+    }) = &nv.value
+    else {
+        return None;
+    };
+    let name = name.value();
+    let number = name.strip_prefix('s')?.parse().ok()?;
+    (1..=7).contains(&number).then_some(number)
+}
+
+/// Whether `meta` mentions a session feature anywhere.
+pub fn mentions_session(meta: &Meta) -> bool {
+    if session_feature(meta).is_some() {
+        return true;
+    }
+    match meta {
+        Meta::List(list) => list
+            .parse_args_with(Punctuated::<Meta, syn::Token![,]>::parse_terminated)
+            .is_ok_and(|inner| inner.iter().any(mentions_session)),
+        _ => false,
+    }
+}
+
+/// `meta` (from `source`) in the view of session `session`.
+pub fn evaluate(meta: &Meta, session: u32, source: &Source) -> Cfg {
+    if let Some(n) = session_feature(meta) {
+        return Cfg::Known(n <= session);
+    }
+    let Meta::List(list) = meta else {
+        return Cfg::Other(source.slice(meta.span()).to_owned());
+    };
+    let name = list
+        .path
+        .get_ident()
+        .map(|i| i.to_string())
+        .unwrap_or_default();
+    let inner: Vec<Meta> = list
+        .parse_args_with(Punctuated::<Meta, syn::Token![,]>::parse_terminated)
+        .map(|p| p.into_iter().collect())
+        .unwrap_or_default();
+    let parts: Vec<Cfg> = inner.iter().map(|m| evaluate(m, session, source)).collect();
+    match name.as_str() {
+        "not" => match &parts[..] {
+            [Cfg::Known(b)] => Cfg::Known(!b),
+            [Cfg::Other(text)] => Cfg::Other(format!("not({text})")),
+            _ => Cfg::Other(source.slice(meta.span()).to_owned()),
+        },
+        "all" => combine(parts, false, "all"),
+        "any" => combine(parts, true, "any"),
+        _ => Cfg::Other(source.slice(meta.span()).to_owned()),
+    }
+}
+
+/// `all(...)` (`absorbing` false) or `any(...)` (`absorbing` true) of `parts`: an
+/// absorbing constant decides it, the other constant drops out.
+fn combine(parts: Vec<Cfg>, absorbing: bool, name: &str) -> Cfg {
+    let mut others = vec![];
+    for part in parts {
+        match part {
+            Cfg::Known(b) if b == absorbing => return Cfg::Known(absorbing),
+            Cfg::Known(_) => {}
+            Cfg::Other(text) => others.push(text),
+        }
+    }
+    match others.len() {
+        0 => Cfg::Known(!absorbing),
+        1 => Cfg::Other(others.remove(0)),
+        _ => Cfg::Other(format!("{name}({})", others.join(", "))),
+    }
+}

@@ -1,0 +1,181 @@
+//! The book's listings, as an mdBook preprocessor: `{{#listing sN FILE ANCHOR}}`
+//! in a chapter becomes the code between `// ANCHOR: ANCHOR` and
+//! `// ANCHOR_END: ANCHOR` in FILE of the view of session N, captioned with its
+//! file; the lines it gained in session N, found by comparing with the view of
+//! session N - 1, end with `// +`. The views are written afresh into
+//! `target/book-views/` each time the book is built, so a listing shows exactly
+//! what a student has after that session: no gate, no later session's code.
+
+use std::collections::HashSet;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+
+use crate::view::write_view;
+
+/// Reads mdBook's `[context, book]` from stdin, writes the book with its listings
+/// filled in to stdout.
+pub fn preprocess(root: &Path) -> Result<(), String> {
+    let views = root.join("target/book-views");
+    for n in 1..=7 {
+        write_view(root, n, &views.join(format!("s{n}")))?;
+    }
+    let mut input = String::new();
+    std::io::stdin()
+        .read_to_string(&mut input)
+        .map_err(|e| e.to_string())?;
+    let [_, mut book]: [Value; 2] =
+        serde_json::from_str(&input).map_err(|e| format!("mdBook's input: {e}"))?;
+    let mut seen = HashSet::new();
+    walk(&mut book, &views, &mut seen)?;
+    println!("{book}");
+    Ok(())
+}
+
+/// Fills the listings of every chapter under `value`.
+fn walk(value: &mut Value, views: &Path, seen: &mut HashSet<String>) -> Result<(), String> {
+    match value {
+        Value::Object(map) => {
+            if let Some(Value::Object(chapter)) = map.get_mut("Chapter")
+                && let Some(Value::String(content)) = chapter.get_mut("content")
+            {
+                *content = fill(content, views, seen)?;
+            }
+            map.values_mut().try_for_each(|v| walk(v, views, seen))
+        }
+        Value::Array(items) => items.iter_mut().try_for_each(|v| walk(v, views, seen)),
+        _ => Ok(()),
+    }
+}
+
+/// `content` with each `{{#listing ...}}` replaced by its listing.
+fn fill(content: &str, views: &Path, seen: &mut HashSet<String>) -> Result<String, String> {
+    let mut out = String::new();
+    let mut rest = content;
+    while let Some(start) = rest.find("{{#listing ") {
+        let end = rest[start..]
+            .find("}}")
+            .ok_or("a {{#listing ...}} is not closed")?;
+        out += &rest[..start];
+        let directive = &rest[start + "{{#listing ".len()..start + end];
+        if !seen.insert(directive.trim().to_owned()) {
+            return Err(format!("listing `{directive}` is shown twice in the book"));
+        }
+        out += &listing(directive, views)?;
+        rest = &rest[start + end + 2..];
+    }
+    Ok(out + rest)
+}
+
+/// The listing of `sN FILE ANCHOR`: caption, then the code.
+fn listing(directive: &str, views: &Path) -> Result<String, String> {
+    let words: Vec<&str> = directive.split_whitespace().collect();
+    let [session, file, anchor] = words[..] else {
+        return Err(format!(
+            "`{{{{#listing {directive}}}}}`: expected sN FILE ANCHOR"
+        ));
+    };
+    let n: u32 = session
+        .strip_prefix('s')
+        .and_then(|n| n.parse().ok())
+        .filter(|n| (1..=7).contains(n))
+        .ok_or_else(|| format!("`{session}` is not a session s1 to s7"))?;
+    let path = |n: u32| -> PathBuf { views.join(format!("s{n}")).join(file) };
+    let code = anchored(&path(n), anchor)?
+        .ok_or_else(|| format!("no anchor `{anchor}` in {file} of session {n}"))?;
+    let before = match n {
+        1 => None,
+        _ => anchored(&path(n - 1), anchor)?,
+    };
+    let (code, note) = match before {
+        Some(before) if before != code => (
+            mark_gained(&before, &code),
+            ", lines marked `// +` new in this session",
+        ),
+        Some(_) => (code, ", unchanged since the last session"),
+        None => (code, ""),
+    };
+    Ok(format!(
+        "<p class=\"listing-caption\"><code>{file}</code> (session {n}{note})</p>\n\n```rust,ignore\n{code}```\n"
+    ))
+}
+
+/// The lines between `// ANCHOR: anchor` and `// ANCHOR_END: anchor` in `file`,
+/// without other anchor lines and without their common indentation; `None` when
+/// the file or the anchor is absent.
+fn anchored(file: &Path, anchor: &str) -> Result<Option<String>, String> {
+    let Ok(text) = std::fs::read_to_string(file) else {
+        return Ok(None);
+    };
+    let start = format!("ANCHOR: {anchor}");
+    let end = format!("ANCHOR_END: {anchor}");
+    let mut inside = false;
+    let mut lines = vec![];
+    for line in text.lines() {
+        let trimmed = line.trim();
+        if trimmed.ends_with(&start) && trimmed.starts_with("//") {
+            inside = true;
+        } else if trimmed.ends_with(&end) && trimmed.starts_with("//") {
+            return Ok(Some(dedent(&lines)));
+        } else if inside && !(trimmed.starts_with("// ANCHOR")) {
+            lines.push(line);
+        }
+    }
+    match inside {
+        true => Err(format!(
+            "{}: anchor `{anchor}` is not closed",
+            file.display()
+        )),
+        false => Ok(None),
+    }
+}
+
+/// `lines` without their common leading white space, each ended by a newline.
+fn dedent(lines: &[&str]) -> String {
+    let indent = lines
+        .iter()
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| l.len() - l.trim_start().len())
+        .min()
+        .unwrap_or(0);
+    lines
+        .iter()
+        .map(|l| format!("{}\n", l.get(indent..).unwrap_or("").trim_end()))
+        .collect()
+}
+
+/// `after` with `// +` at the end of each line that `before` does not have: the
+/// lines outside a longest common subsequence of the two.
+fn mark_gained(before: &str, after: &str) -> String {
+    let (a, b): (Vec<&str>, Vec<&str>) = (before.lines().collect(), after.lines().collect());
+    let mut common = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for i in (0..a.len()).rev() {
+        for j in (0..b.len()).rev() {
+            common[i][j] = if a[i] == b[j] {
+                common[i + 1][j + 1] + 1
+            } else {
+                common[i + 1][j].max(common[i][j + 1])
+            };
+        }
+    }
+    let (mut i, mut j) = (0, 0);
+    let mut out = String::new();
+    while j < b.len() {
+        if i < a.len() && a[i] == b[j] {
+            out += &format!("{}\n", b[j]);
+            i += 1;
+            j += 1;
+        } else if i < a.len() && common[i + 1][j] >= common[i][j + 1] {
+            i += 1;
+        } else {
+            let line = b[j];
+            out += &match line.trim().is_empty() {
+                true => "\n".to_owned(),
+                false => format!("{line} // +\n"),
+            };
+            j += 1;
+        }
+    }
+    out
+}

@@ -1,0 +1,61 @@
+//! The developer and student tasks of `raycourse`:
+//!
+//! - `cargo xtask view sN DIR`: the crate as it stands after session N, in `DIR`;
+//! - `cargo xtask views DIR`: the views of all seven sessions, in `DIR/s1` ... `DIR/s7`;
+//! - `cargo xtask mdbook-listings`: the book's preprocessor that takes each session
+//!   chapter's listings from that session's view (mdBook runs it).
+
+mod cfg;
+mod listings;
+mod manifest;
+mod prune;
+mod source;
+mod view;
+
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// The crate's root: the folder above this one.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("xtask lives in the crate's folder")
+        .to_owned()
+}
+
+/// The session of `sN`, 1 to 7.
+fn session(text: &str) -> Result<u32, String> {
+    text.strip_prefix('s')
+        .and_then(|n| n.parse().ok())
+        .filter(|n| (1..=7).contains(n))
+        .ok_or_else(|| format!("`{text}` is not a session: expected s1 to s7"))
+}
+
+fn run(args: &[String]) -> Result<(), String> {
+    let usage =
+        "usage: cargo xtask view sN DIR | cargo xtask views DIR | cargo xtask mdbook-listings";
+    match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
+        ["view", n, dir] => {
+            let n = session(n)?;
+            view::write_view(&root(), n, Path::new(dir))?;
+            println!("session {n}'s view -> {dir}");
+            Ok(())
+        }
+        ["views", dir] => (1..=7)
+            .try_for_each(|n| view::write_view(&root(), n, &Path::new(dir).join(format!("s{n}")))),
+        ["mdbook-listings", "supports", _] => Ok(()),
+        ["mdbook-listings"] => listings::preprocess(&root()),
+        _ => Err(usage.into()),
+    }
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::from(2)
+        }
+    }
+}

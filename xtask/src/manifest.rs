@@ -1,0 +1,103 @@
+//! The view's `Cargo.toml`: the crate's own, without session features.
+
+use toml_edit::{DocumentMut, Item, Value};
+
+/// The session of a feature name `sN`, if it is one.
+fn session_of(feature: &str) -> Option<u32> {
+    feature
+        .strip_prefix('s')?
+        .parse()
+        .ok()
+        .filter(|n| (1..=7).contains(n))
+}
+
+/// `Cargo.toml` text as it stands after `session`: its version marked with the
+/// session (`0.1.0-s3`, so that views built side by side stay apart); no features
+/// `s1`..`s7` and no
+/// default features; dependencies that a session brings (`dep:tobj`) plain when
+/// the view has that session, absent otherwise; no workspace; benches and examples
+/// that need a later session left out, the others without their session
+/// requirement. Also returns the names of the targets left out.
+pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), String> {
+    let mut doc: DocumentMut = text.parse().map_err(|e| format!("Cargo.toml: {e}"))?;
+    doc.remove("workspace");
+    let version = doc["package"]["version"]
+        .as_str()
+        .unwrap_or("0.1.0")
+        .to_owned();
+    doc["package"]["version"] = toml_edit::value(format!("{version}-s{session}"));
+    let mut brought = vec![];
+    if let Some(features) = doc.get_mut("features").and_then(Item::as_table_mut) {
+        for n in 1..=7u32 {
+            let name = format!("s{n}");
+            let deps: Vec<String> = features
+                .get(&name)
+                .and_then(Item::as_array)
+                .map(|a| {
+                    a.iter()
+                        .filter_map(Value::as_str)
+                        .map(str::to_owned)
+                        .collect()
+                })
+                .unwrap_or_default();
+            for dep in deps.iter().filter_map(|d| d.strip_prefix("dep:")) {
+                brought.push((dep.to_owned(), n));
+            }
+            features.remove(&name);
+        }
+        features.remove("default");
+        features.decor_mut().set_prefix("\n");
+    }
+    if let Some(deps) = doc
+        .get_mut("dependencies")
+        .and_then(Item::as_table_like_mut)
+    {
+        for (dep, n) in brought {
+            if n > session {
+                deps.remove(&dep);
+            } else if let Some(table) = deps.get_mut(&dep).and_then(Item::as_table_like_mut) {
+                table.remove("optional");
+            }
+        }
+    }
+    let mut dropped = vec![];
+    for kind in ["bench", "example"] {
+        let Some(targets) = doc.get_mut(kind).and_then(Item::as_array_of_tables_mut) else {
+            continue;
+        };
+        targets.retain(|target| {
+            let needs = target
+                .get("required-features")
+                .and_then(Item::as_array)
+                .map(|a| {
+                    a.iter()
+                        .filter_map(Value::as_str)
+                        .filter_map(session_of)
+                        .max()
+                });
+            let keep = needs.flatten().is_none_or(|n| n <= session);
+            if !keep {
+                dropped.push(
+                    target
+                        .get("name")
+                        .and_then(Item::as_str)
+                        .unwrap_or("")
+                        .to_owned(),
+                );
+            }
+            keep
+        });
+        for target in targets.iter_mut() {
+            if let Some(required) = target
+                .get_mut("required-features")
+                .and_then(Item::as_array_mut)
+            {
+                required.retain(|v| v.as_str().and_then(session_of).is_none());
+                if required.is_empty() {
+                    target.remove("required-features");
+                }
+            }
+        }
+    }
+    Ok((doc.to_string(), dropped))
+}
