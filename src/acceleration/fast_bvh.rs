@@ -108,7 +108,7 @@ impl WideRay {
     /// [`Aabb::entry`] on four boxes at once. Per axis the ray crosses the lowest
     /// and the highest plane; the nearer crossing is where it enters the slab,
     /// whichever way it goes. Each distance carries at most three roundings, so the
-    /// exit is widened by `1 + 2 gamma(3)`; `limit` is finite and already widened.
+    /// exit is widened by `1 + 2 delta_3`; `limit` is finite and already widened.
     #[inline(always)]
     fn enters(&self, node: &WideNode, limit: Limit) -> (u32, Vec4) {
         let mut entry = Vec4::ZERO;
@@ -127,7 +127,7 @@ impl WideRay {
     // ANCHOR_END: wide_slab
 }
 
-/// `1 + 2 gamma(3)` in single precision, rounded up.
+/// `1 + 2 delta_3` in single precision, rounded up.
 const WIDENING: f32 = 1.0 + 8.0 * f32::EPSILON;
 
 /// How far the box tests look: a distance rounded up to single precision and

@@ -72,7 +72,7 @@ impl Aabb {
     /// follow the zero's (`1 / -0 = -inf`), and when the origin also lies on one of
     /// the planes, `0 * inf` is NaN. The comparisons below, false for NaN, then leave
     /// the interval unconstrained on that axis, as they should for a ray lying in the
-    /// face. The exit distance is widened by `1 + 2 gamma(3)` (pbrt-v4) so that
+    /// face. The exit distance is widened by `1 + 2 delta_3` (pbrt-v4) so that
     /// rounding never misses a box that a triangle hit inside it proves the ray
     /// reaches.
     #[inline]

@@ -26,31 +26,32 @@ impl Sphere {
     // ANCHOR: intersect
     /// The smallest `t > 0` at which `ray` meets the sphere, if any.
     ///
-    /// With `f = o - c` and a unit direction `d`, the points `|o + t d - c|^2 = r^2`
-    /// solve `t^2 + 2 (f.d) t + (|f|^2 - r^2) = 0`. The textbook discriminant
-    /// `(f.d)^2 - (|f|^2 - r^2)` subtracts two large, nearly equal numbers for a small
+    /// With `s = O - C` and a unit direction `d`, the points `|O + t d - C|^2 = R^2`
+    /// solve `t^2 + 2 (s.d) t + (|s|^2 - R^2) = 0`. The textbook discriminant
+    /// `(s.d)^2 - (|s|^2 - R^2)` subtracts two large, nearly equal numbers for a small
     /// or distant sphere; Ray Tracing Gems, chapter 7, computes the same quantity as
-    /// `r^2 - |f - (f.d) d|^2`, the squared half-chord, without that cancellation.
-    /// The roots then come from `q = -(f.d + sign(f.d) sqrt(disc))` as `c / q` and `q`,
-    /// so the smaller one is not computed as a difference of nearly equal numbers either.
+    /// `R^2 - |s - (s.d) d|^2`, the squared half-chord, without that cancellation.
+    /// The roots then come from `mu = -(s.d + sign(s.d) sqrt(discriminant))` as
+    /// `(|s|^2 - R^2) / mu` and `mu`, so the smaller one is not computed as a
+    /// difference of nearly equal numbers either.
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Real> {
-        let f = ray.origin - self.centre;
-        let h = f.dot(ray.direction);
-        let c = f.length_squared() - self.radius * self.radius;
-        if c > 0.0 && h > 0.0 {
+        let s = ray.origin - self.centre;
+        let sd = s.dot(ray.direction);
+        let c = s.length_squared() - self.radius * self.radius;
+        if c > 0.0 && sd > 0.0 {
             return None; // outside, and moving away
         }
-        let chord = f - h * ray.direction;
+        let chord = s - sd * ray.direction;
         let discriminant = self.radius * self.radius - chord.length_squared();
         if discriminant < 0.0 {
             return None;
         }
-        let q = -(h + discriminant.sqrt().copysign(h));
-        if q == 0.0 {
+        let mu = -(sd + discriminant.sqrt().copysign(sd));
+        if mu == 0.0 {
             return None;
         }
-        let (t0, t1) = (c / q, q);
+        let (t0, t1) = (c / mu, mu);
         let (near, far) = if t0 < t1 { (t0, t1) } else { (t1, t0) };
         if near > 0.0 {
             Some(near)

@@ -4,14 +4,14 @@ use crate::geometry::Ray;
 use crate::maths::{Real, Vec3};
 
 /// Where a ray meets a triangle: its distance and the barycentric coordinates of the
-/// point, `P = alpha A + beta B + gamma C` with `alpha = 1 - beta - gamma`.
+/// point, `P = b_A A + b_B B + b_C C` with `b_A = 1 - b_B - b_C`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TriangleHit {
     /// Distance along the ray.
     pub t: Real,
-    /// Weight of the second vertex.
+    /// Weight `b_B` of the second vertex.
     pub beta: Real,
-    /// Weight of the third vertex.
+    /// Weight `b_C` of the third vertex.
     pub gamma: Real,
 }
 
@@ -32,13 +32,13 @@ pub enum TriangleTest {
 // ANCHOR: intersect_triangle
 /// Where `ray` meets the triangle `(a, b, c)` at a distance in `(0, t_max)`, if it does.
 ///
-/// The point `O + t d = A + beta (B - A) + gamma (C - A)` is a 3x3 linear system in
-/// `(t, beta, gamma)`. With `e1 = B - A`, `e2 = C - A`, `s = O - A`, Cramer's rule
+/// The point `O + t d = A + b_B (B - A) + b_C (C - A)` is a 3x3 linear system in
+/// `(t, b_B, b_C)`. With `e1 = B - A`, `e2 = C - A`, `w = O - A`, Cramer's rule
 /// gives each unknown as a ratio of triple products; Moller and Trumbore compute
-/// `p = d x e2` and `q = s x e1` once: `det = e1 . p`, `beta = s . p / det`,
-/// `gamma = d . q / det`, `t = e2 . q / det`. The point is inside when
-/// `beta >= 0`, `gamma >= 0` and `beta + gamma <= 1`. A ray parallel to the plane
-/// has `det = 0` and misses.
+/// `h = d x e2` and `q = w x e1` once: `det = e1 . h`, `b_B = w . h / det`,
+/// `b_C = d . q / det`, `t = e2 . q / det`. The point is inside when `b_B >= 0`,
+/// `b_C >= 0` and `b_B + b_C <= 1`. A ray parallel to the plane has `det = 0` and
+/// misses. (The hit calls `b_B` and `b_C` `beta` and `gamma`.)
 #[inline]
 pub fn intersect_triangle(
     ray: &Ray,
@@ -49,18 +49,18 @@ pub fn intersect_triangle(
 ) -> Option<TriangleHit> {
     let e1 = b - a;
     let e2 = c - a;
-    let p = ray.direction.cross(e2);
-    let det = e1.dot(p);
+    let h = ray.direction.cross(e2);
+    let det = e1.dot(h);
     if det == 0.0 {
         return None;
     }
     let inv_det = 1.0 / det;
-    let s = ray.origin - a;
-    let beta = s.dot(p) * inv_det;
+    let w = ray.origin - a;
+    let beta = w.dot(h) * inv_det;
     if !(0.0..=1.0).contains(&beta) {
         return None;
     }
-    let q = s.cross(e1);
+    let q = w.cross(e1);
     let gamma = ray.direction.dot(q) * inv_det;
     if gamma < 0.0 || beta + gamma > 1.0 {
         return None;
