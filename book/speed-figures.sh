@@ -16,8 +16,6 @@ converge light-sampling --compare light-sampling --max-spp 256 --reference-spp 8
 converge indirect --compare bounces --max-spp 256 --reference-spp 8192 --out "$out/bounces"
 converge indirect --compare roulette --max-spp 256 --reference-spp 8192 --out "$out/roulette"
 converge bvh --compare acceleration --max-spp 4 --reference-spp 64 --out "$out/acceleration"
-converge bvh --compare leaf --max-spp 64 --reference-spp 1024 --out "$out/leaf"
-converge textures --compare filter --max-spp 64 --reference-spp 1024 --out "$out/filter"
 
 # Precision: the same study from both builds, against the same (cached) reference.
 converge indirect --label double --max-spp 256 --reference-spp 8192 --out "$out/double"

@@ -86,10 +86,13 @@ fn samples(scene: &Scene) -> Vec<Vec<Real>> {
     pixels
 }
 
-/// Mean and standard error of the mean.
+/// Mean and standard error of the mean (0 for a single value).
 fn mean_and_error(values: &[Real]) -> (Real, Real) {
     let n = values.len() as Real;
     let mean = values.iter().sum::<Real>() / n;
+    if values.len() < 2 {
+        return (mean, 0.0);
+    }
     let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<Real>() / (n - 1.0);
     (mean, (variance / n).sqrt())
 }
