@@ -39,6 +39,7 @@
 //! | [`render`](mod@render) | every pixel, in parallel; the film; PNG files | 1, 3 |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
 //! | `studies` | error against samples and time, scale sweeps, ray sets | 3, 6 |
+//! | `check` | a student's image against the stage's, and the likely mistake | 7 |
 //!
 //! A program starts with a [`Stage`] (or a scene file, [`load_scene`]), renders its
 //! [`Scene`] with [`render()`] and writes the [`Film`] with [`encode_png`]:
@@ -80,6 +81,9 @@ pub mod scene_file;
 
 #[cfg(feature = "s3")]
 pub mod studies;
+
+#[cfg(feature = "s7")]
+pub mod check;
 
 pub use render::{Film, Render, encode_png, render};
 pub use scene::Scene;

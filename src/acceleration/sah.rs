@@ -33,10 +33,10 @@ impl Bvh {
     // ANCHOR: sah
     /// Builds the hierarchy of `mesh` with the surface area heuristic. A node is
     /// split where the expected cost of a random ray through it is least:
-    /// `C_trav + (A_left N_left + A_right N_right) / A`, with `A` the box areas and
-    /// `N` the triangle counts, over 16 candidate planes per axis (the triangles'
+    /// `c_trav + (S_left K_left + S_right K_right) / S`, with `S` the box areas and
+    /// `K` the triangle counts, over 16 candidate planes per axis (the triangles'
     /// centroids sorted into bins). It becomes a leaf when no split is cheaper than
-    /// testing its `N` triangles, if it holds at most `max_leaf` of them. Where a
+    /// testing its `K` triangles, if it holds at most `max_leaf` of them. Where a
     /// traversal tests `block` triangles at once, `N` counts blocks, `ceil(N / block)`:
     /// a leaf of four costs what a leaf of one does when four are tested together.
     pub fn build_sah(mesh: &Mesh, max_leaf: usize, block: usize) -> Bvh {
@@ -139,7 +139,7 @@ fn blocks(count: usize, block: usize) -> Real {
 }
 
 /// The cheapest of the `3 (BINS - 1)` candidate splits of `items`, with its cost
-/// `A_left N_left + A_right N_right` (`N` in blocks of `block` triangles); `None`
+/// `S_left K_left + S_right K_right` (`K` in blocks of `block` triangles); `None`
 /// when every centroid is the same point.
 fn best_split(
     items: &[u32],

@@ -20,7 +20,8 @@ use crate::camera::PixelFilter;
 pub struct Camera {
     /// The eye: where every camera ray starts.
     pub position: Vec3,
-    /// The vertical field of view `theta`, in radians.
+    /// The vertical field of view `alpha`, in radians (the scene file gives it in
+    /// degrees).
     pub fov: Real,
     /// Image width `W` in pixels.
     pub width: u32,
@@ -55,7 +56,7 @@ impl Camera {
     /// The (unnormalised) direction through the centre of pixel (`row`, `column`),
     /// rows counted from the top of the image. With `i = H - 1 - row` the row counted
     /// from the bottom, as in the course:
-    /// `(j - W/2 + 0.5, i - H/2 + 0.5, -H / (2 tan(theta/2)))`.
+    /// `(j - W/2 + 0.5, i - H/2 + 0.5, -H / (2 tan(alpha/2)))`.
     /// The image plane sits at the distance where `H` pixels span the field of view.
     pub fn pixel_direction(&self, row: u32, column: u32) -> Vec3 {
         let (w, h) = (self.width as Real, self.height as Real);

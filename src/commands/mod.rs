@@ -20,6 +20,9 @@ pub mod plot;
 #[cfg(feature = "s6")]
 pub mod rays;
 
+#[cfg(feature = "s7")]
+pub mod check;
+
 use clap::ArgMatches;
 
 use failure::Failure;
@@ -49,6 +52,8 @@ pub fn verbs() -> Vec<Verb> {
     let verbs = [verbs, vec![converge::VERB, plot::VERB]].concat();
     #[cfg(feature = "s6")]
     let verbs = [verbs, vec![rays::VERB]].concat();
+    #[cfg(feature = "s7")]
+    let verbs = [verbs, vec![check::VERB]].concat();
     verbs
         .into_iter()
         .filter(|v| v.session <= raycourse::scene_file::SESSION)

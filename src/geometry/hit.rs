@@ -27,9 +27,10 @@ pub struct Hit {
     pub emission: Colour,
     /// Index of the object that was hit in the scene's list.
     pub object: usize,
-    /// Whether the ray came from outside the object. Decided by where the ray
-    /// started, not by the sign of `d . N`, which rounding makes unreliable for rays
-    /// that graze the surface.
+    /// Whether the ray came from outside the object. For a sphere, decided by where
+    /// the ray started, inside or outside, which rounding cannot get wrong (the sign
+    /// of `d . N` can, for a ray that grazes the surface); a triangle has no inside,
+    /// so for a mesh it is the sign of `d . N` with the triangle's own normal.
     pub from_outside: bool,
 }
 // ANCHOR_END: hit

@@ -23,6 +23,25 @@ pub struct Sphere {
 // ANCHOR_END: sphere
 
 impl Sphere {
+    // ANCHOR: intersect_textbook
+    /// The course's ray-sphere test, as the textbook writes it: with `s = O - C`,
+    /// `t^2 + 2 (s.d) t + (|s|^2 - R^2) = 0` has the roots
+    /// `t = -(s.d) +- sqrt((s.d)^2 - (|s|^2 - R^2))`, and the nearest hit is the smaller
+    /// positive one. Right for the course's scenes; [`Sphere::intersect`], which the
+    /// renderer uses, computes the same without the cancellation that makes this
+    /// formula miss a small, distant sphere.
+    pub fn intersect_textbook(&self, ray: &Ray) -> Option<Real> {
+        let s = ray.origin - self.centre;
+        let sd = s.dot(ray.direction);
+        let discriminant = sd * sd - (s.length_squared() - self.radius * self.radius);
+        if discriminant < 0.0 {
+            return None;
+        }
+        let root = discriminant.sqrt();
+        [-sd - root, -sd + root].into_iter().find(|&t| t > 0.0)
+    }
+    // ANCHOR_END: intersect_textbook
+
     // ANCHOR: intersect
     /// The smallest `t > 0` at which `ray` meets the sphere, if any.
     ///
@@ -63,6 +82,7 @@ impl Sphere {
     }
     // ANCHOR_END: intersect
 
+    // ANCHOR: hit_at
     /// The hit record at distance `t` along `ray`, for the sphere numbered `object`
     /// in the scene. The point is projected back onto
     /// the sphere, `c + r (p - c) / |p - c|`, so that its error depends on the size
@@ -84,6 +104,7 @@ impl Sphere {
             from_outside: (ray.origin - self.centre).length_squared() > self.radius * self.radius,
         }
     }
+    // ANCHOR_END: hit_at
 }
 
 #[cfg(test)]
@@ -175,6 +196,24 @@ mod tests {
     }
 
     #[test]
+    fn the_textbook_formula_agrees_in_the_course_s_scenes() {
+        let s = sphere(Vec3::new(3.0, -1.0, 2.0), 10.0);
+        for k in 0..1000 {
+            let a = k as Real * 0.0137;
+            let ray = Ray::new(
+                Vec3::new(0.0, 0.0, 55.0),
+                Vec3::new(a.sin() * 0.3, a.cos() * 0.3, -1.0),
+            );
+            match (s.intersect(&ray), s.intersect_textbook(&ray)) {
+                (Some(robust), Some(textbook)) => {
+                    assert!(close(robust, textbook, 1e-9), "{robust} {textbook}")
+                }
+                (robust, textbook) => assert_eq!(robust.is_some(), textbook.is_some(), "ray {k}"),
+            }
+        }
+    }
+
+    #[test]
     fn tiny_far_sphere_is_hit_where_the_textbook_formula_breaks() {
         // A sphere of radius 1e-3 at 1e6: b^2 and c are about 1e12 and their
         // difference 1e-6, below the rounding of either.
@@ -185,6 +224,12 @@ mod tests {
             .expect("the ray passes through the sphere");
         let expected = 1e6 - (1e-6 - 25e-8 as Real).sqrt();
         assert!(close(t, expected, 1e-12), "t = {t}, expected {expected}");
+        // In single precision 1e6 has no digits left for a sphere of 1e-3 at all.
+        let textbook = s.intersect_textbook(&ray);
+        assert!(
+            cfg!(feature = "f32") || textbook.is_none_or(|t| (t - expected).abs() > 0.5e-3),
+            "the textbook formula misses the sphere or is off by half its radius: {textbook:?}"
+        );
     }
 
     #[test]

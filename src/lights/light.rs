@@ -13,12 +13,13 @@ pub enum Light {
     Sphere(crate::lights::SphereLight),
 }
 
-/// A point light radiating `intensity` watts equally in every direction.
+/// A point light radiating its power `intensity` equally in every direction.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PointLight {
     /// Where the light is.
     pub position: Vec3,
-    /// Total emitted power `I`, on the course's scale.
+    /// Total emitted power `Phi` (the course calls it the intensity `I`), in the
+    /// course's units, in which a radiance of 255 shows as full white.
     pub intensity: Real,
 }
 // ANCHOR_END: light
@@ -27,10 +28,11 @@ impl PointLight {
     // ANCHOR: lambert
     /// Radiance that a Lambertian surface of `albedo` at `point`, with unit `normal`,
     /// sends towards the eye under this light, shadows aside:
-    /// `L = I / (4 pi d^2) * max(0, N . l) * albedo / pi`,
-    /// where `d` is the distance to the light and `l` the unit direction towards it.
-    /// `I / (4 pi d^2)` is the power per unit area arriving at distance `d`,
-    /// `N . l` spreads it over the tilted surface, `albedo / pi` is the BRDF.
+    /// `L = Phi / (4 pi r^2) * max(0, N . l) * albedo / pi`,
+    /// where `Phi` is the light's power (`intensity`), `r` the distance to the light
+    /// and `l` the unit direction towards it. `Phi / (4 pi r^2)` is the power per unit
+    /// area arriving at distance `r`, `N . l` spreads it over the tilted surface,
+    /// `albedo / pi` is the BRDF.
     pub fn lambert(&self, point: Vec3, normal: Vec3, albedo: Colour) -> Colour {
         let to_light = self.position - point;
         let d2 = to_light.length_squared();

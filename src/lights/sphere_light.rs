@@ -44,7 +44,8 @@ impl Cone {
     }
 
     /// A direction in the cone, uniform per unit solid angle:
-    /// `1 - cos(theta) = u1 (1 - cos_max)`, `phi = 2 pi u2`, and
+    /// `1 - cos(theta) = xi1 (1 - cos_max)`, `phi = 2 pi xi2` (`xi1 = u1`, `xi2 = u2`;
+    /// `theta` measured from the cone's axis, towards the light), and
     /// `sin^2(theta) = (1 - cos)(1 + cos)`, again without cancellation.
     pub fn sample(&self, u1: Real, u2: Real) -> Vec3 {
         let one_minus_cos = u1 * self.one_minus_cos_max;
@@ -82,7 +83,7 @@ impl SphereLight {
         }
     }
 
-    /// The sphere that is the light's visible body: it emits and reflects nothing.
+    /// The sphere that is the light's visible body: it glows, and reflects nothing.
     pub fn body(&self) -> Sphere {
         Sphere {
             centre: self.centre,

@@ -12,21 +12,22 @@ pub fn reflect(incident: Vec3, normal: Vec3) -> Vec3 {
 // ANCHOR_END: reflect
 
 // ANCHOR: refract
-/// The refracted direction of the unit `incident` through a surface with unit
-/// `normal` on the incident side, where `eta = n1 / n2` is the ratio of the indices
-/// before and after. Snell-Descartes, `n1 sin t1 = n2 sin t2`, scales the tangential
-/// part `d_t = d - (d . n) n` by `eta`; the normal part is `-sqrt(1 - eta^2 |d_t|^2) n`.
-/// `sin^2 t1` is taken as `|d_t|^2` rather than `1 - cos^2 t1`, which cancels near
-/// normal incidence. `None` when the square root's argument is negative: total
-/// internal reflection.
+/// The refracted direction `d_t` of the unit `incident` direction `d` through a
+/// surface with unit `normal` `N` on the incident side, where `eta = n1 / n2` is the
+/// ratio of the indices before and after. Snell-Descartes,
+/// `n1 sin(theta_1) = n2 sin(theta_2)`, scales the part of `d` parallel to the
+/// surface, `d_par = d - (d . N) N`, by `eta`; the part along the normal is
+/// `-sqrt(1 - eta^2 |d_par|^2) N`. `sin^2(theta_1)` is taken as `|d_par|^2` rather
+/// than `1 - cos^2(theta_1)`, which cancels near normal incidence. `None` when the
+/// square root's argument is negative: total internal reflection.
 pub fn refract(incident: Vec3, normal: Vec3, eta: Real) -> Option<Vec3> {
-    let tangential = incident - incident.dot(normal) * normal;
-    let sin2_t = eta * eta * tangential.length_squared();
+    let parallel = incident - incident.dot(normal) * normal;
+    let sin2_t = eta * eta * parallel.length_squared();
     if sin2_t > 1.0 {
         return None;
     }
     let cos_t = (1.0 - sin2_t).sqrt();
-    Some(eta * tangential - cos_t * normal)
+    Some(eta * parallel - cos_t * normal)
 }
 // ANCHOR_END: refract
 
@@ -76,7 +77,7 @@ mod tests {
                 let rhs = n2 * sin_to(t, n);
                 assert!(
                     (lhs - rhs).abs() < 64.0 * Real::EPSILON,
-                    "{n1} sin t1 = {lhs}, {n2} sin t2 = {rhs}"
+                    "{n1} sin theta_1 = {lhs}, {n2} sin theta_2 = {rhs}"
                 );
             }
         }

@@ -29,8 +29,8 @@ pub struct Texture {
 
 // ANCHOR: to_linear
 /// The linear value of an 8-bit texel channel. Pictures store
-/// gamma-encoded values (the display shows `v^2.2`), while shading needs the
-/// reflectance itself: `(v / 255)^2.2`.
+/// gamma-encoded values `c` (the display shows `c^2.2`), while shading needs the
+/// reflectance itself: `(c / 255)^2.2`.
 pub fn to_linear(v: u8) -> Real {
     (Real::from(v) / 255.0).powf(2.2)
 }

@@ -6,7 +6,8 @@ use crate::maths::{PI, Real, Vec3};
 // ANCHOR: cosine
 /// A direction in the hemisphere around `+z` with density proportional to
 /// `cos(theta)`, from two uniform numbers in `[0, 1)`, as in the course:
-/// `x = cos(2 pi u1) sqrt(1 - u2)`, `y = sin(2 pi u1) sqrt(1 - u2)`, `z = sqrt(u2)`.
+/// `x = cos(2 pi xi1) sqrt(1 - xi2)`, `y = sin(2 pi xi1) sqrt(1 - xi2)`,
+/// `z = sqrt(xi2)`, with `xi1`, `xi2` the two uniform numbers `u1`, `u2`.
 pub fn sample_cosine_hemisphere(u1: Real, u2: Real) -> Vec3 {
     let r = (1.0 - u2).sqrt();
     let phi = 2.0 * PI * u1;
@@ -22,8 +23,9 @@ pub fn cosine_hemisphere_pdf(cos_theta: Real) -> Real {
 
 // ANCHOR: gaussian
 /// Two independent normal numbers of standard deviation `sigma` from two uniform
-/// numbers in `[0, 1)` (Box-Muller): radius `sigma sqrt(-2 ln(1 - u1))`, angle
-/// `2 pi u2`. `1 - u1` lies in `(0, 1]`, so the logarithm is never taken of 0.
+/// numbers `xi1 = u1`, `xi2 = u2` in `[0, 1)` (Box-Muller): radius
+/// `sigma sqrt(-2 ln(1 - xi1))`, angle `2 pi xi2`. `1 - xi1` lies in `(0, 1]`, so
+/// the logarithm is never taken of 0.
 pub fn sample_gaussian(u1: Real, u2: Real, sigma: Real) -> (Real, Real) {
     let r = sigma * (-2.0 * (1.0 - u1).ln()).sqrt();
     let phi = 2.0 * PI * u2;

@@ -1,0 +1,129 @@
+//! What a stage should give at a student's image size: its reference images,
+//! rendered once and cached.
+
+use std::num::NonZeroU32;
+use std::path::Path;
+
+use crate::render::{Film, render_reporting};
+use crate::scene::Scene;
+use crate::scene_file::{Overrides, SceneError, Stage, parse_scene};
+use crate::studies::reference::{load_reference, reference_path, save_reference};
+
+/// The seeds of the two halves of a Monte Carlo reference: other random numbers
+/// than any stage's own.
+const SEEDS: [u64; 2] = [0x00c0_ffee, 0x0bad_cafe];
+
+/// The stage's reference at one size.
+pub struct Expected {
+    /// The stage's scene at the student's size, with the course's settings.
+    pub scene: Scene,
+    /// Whether the stage draws no random number: one sample per pixel.
+    pub deterministic: bool,
+    /// One film for a deterministic stage; for a Monte Carlo one, two independent
+    /// films of half the course's samples each.
+    pub films: Vec<Film>,
+}
+
+impl Expected {
+    /// The reference film: the one film, or the mean of the two halves, which has
+    /// the course's number of samples.
+    pub fn film(&self) -> Film {
+        let mut film = self.films[0].clone();
+        if let Some(other) = self.films.get(1) {
+            for (a, b) in film.pixels.iter_mut().zip(&other.pixels) {
+                *a = (*a + *b) * 0.5;
+            }
+        }
+        film
+    }
+}
+
+/// Where an image is rendered from: the stage, the edits of its scene file, the size
+/// and the folder of cached references.
+pub struct Source<'a> {
+    /// The stage.
+    pub stage: &'a Stage,
+    /// Width and height of the student's image.
+    pub size: (u32, u32),
+    /// Folder of cached renders.
+    pub cache: &'a Path,
+    /// Told how many samples of each row are done, for a progress bar.
+    pub progress: &'a (dyn Fn(u64) + Sync),
+}
+
+impl Source<'_> {
+    /// The stage's reference at the student's size (see [`Expected`]).
+    pub fn expected(&self) -> Result<Expected, SceneError> {
+        let scene = self.scene(self.stage.source, None, None)?;
+        let samples = scene.settings.samples;
+        let deterministic = samples == 1;
+        let films = if deterministic {
+            vec![self.film(self.stage.source, 1, None)?]
+        } else {
+            self.halves((samples / 2).max(1))?
+        };
+        Ok(Expected {
+            scene,
+            deterministic,
+            films,
+        })
+    }
+
+    /// Two independent renders of the stage at `samples` per pixel each: a reference
+    /// with the noise of a student's render at those samples, whose clipping to full
+    /// white (which biases noisy bright pixels downwards) it shares.
+    pub fn halves(&self, samples: u32) -> Result<Vec<Film>, SceneError> {
+        SEEDS
+            .iter()
+            .map(|&seed| self.film(self.stage.source, samples, Some(seed)))
+            .collect()
+    }
+
+    /// The scene of the file text `text` at the student's size, with `samples` and
+    /// `seed` when given.
+    pub fn scene(
+        &self,
+        text: &str,
+        samples: Option<u32>,
+        seed: Option<u64>,
+    ) -> Result<Scene, SceneError> {
+        let overrides = Overrides {
+            width: NonZeroU32::new(self.size.0),
+            height: NonZeroU32::new(self.size.1),
+            samples: samples.and_then(NonZeroU32::new),
+            seed,
+            ..Overrides::default()
+        };
+        parse_scene(text, &self.stage.file(), &overrides)
+    }
+
+    /// The film of the scene-file text `text` at the student's size, with `samples`
+    /// and `seed`, from the cache or rendered and cached. Meshes are searched with the
+    /// fast hierarchy, which finds the same hits as any other search.
+    pub fn film(&self, text: &str, samples: u32, seed: Option<u64>) -> Result<Film, SceneError> {
+        let text = fast_search(text);
+        let scene = self.scene(&text, Some(samples), seed)?;
+        let key = format!(
+            "check\n{text}\n{}x{}, {samples} spp, seed {seed:?}",
+            self.size.0, self.size.1
+        );
+        let cached = reference_path(self.cache, &key);
+        if let Some(film) = load_reference(&cached) {
+            (self.progress)(u64::from(scene.camera.height) * u64::from(samples));
+            return Ok(film);
+        }
+        let film = render_reporting(&scene, self.progress).film;
+        // A cache that cannot be written only costs time on the next check.
+        let _ = save_reference(&cached, &film);
+        Ok(film)
+    }
+}
+
+/// `text` with its meshes searched by the fast hierarchy.
+fn fast_search(text: &str) -> String {
+    ["\"none\"", "\"bbox\"", "\"bvh\""]
+        .iter()
+        .fold(text.to_owned(), |t, kind| {
+            t.replace(&format!("acceleration = {kind}"), "acceleration = \"fast\"")
+        })
+}

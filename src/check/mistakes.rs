@@ -1,0 +1,374 @@
+//! The classic mistakes of a student's ray tracer, each as the image it would make
+//! of the stage, so that the checker can tell which one explains a difference.
+
+use image::RgbImage;
+
+use crate::check::compare::{Linear, compare_blocks, compare_pixels, displayed};
+use crate::check::expected::{Expected, Source};
+use crate::lights::Light;
+use crate::materials::Material;
+use crate::maths::{PI, Real};
+use crate::render::Film;
+use crate::scene_file::SceneError;
+
+/// A classic mistake: what it is called and what to look for.
+#[derive(Debug)]
+pub struct Mistake {
+    /// A short name, for tables.
+    pub name: &'static str,
+    /// What to check in one's own code.
+    pub hint: &'static str,
+    /// The image the mistake makes of the stage, as a film read like the student's
+    /// (`None` when the mistake cannot happen in this stage).
+    image: fn(&Candidates) -> Result<Option<Film>, SceneError>,
+}
+
+/// What the mistakes' images are made from.
+pub struct Candidates<'a> {
+    /// Where renders come from.
+    pub source: &'a Source<'a>,
+    /// The stage's reference.
+    pub expected: &'a Expected,
+    /// The reference film (the mean of the halves).
+    pub film: Film,
+    /// The student's image, which some mistakes' images are fitted to.
+    pub student: &'a RgbImage,
+}
+
+/// Every mistake the checker recognises.
+pub const MISTAKES: &[Mistake] = &[
+    Mistake {
+        name: "no gamma",
+        hint: "the image looks displayed without gamma correction: write min(255, L^(1/2.2)), not min(255, L)",
+        image: |c| {
+            Ok(c.gamma_applies()
+                .then(|| c.map(|l, g| l.min(255.0).powf(g))))
+        },
+    },
+    Mistake {
+        name: "gamma twice",
+        hint: "the image looks gamma-corrected twice: apply L^(1/2.2) once, when writing the pixel",
+        image: |c| Ok(c.gamma_applies().then(|| c.map(|l, g| l.powf(1.0 / g)))),
+    },
+    Mistake {
+        name: "1/pi missing",
+        hint: "the image is about pi times too bright: the diffuse BRDF is albedo / pi; check the 1/pi, and that the light's intensity is used as given",
+        image: |c| Ok(Some(c.map(|l, _| l * std::f64::consts::PI))),
+    },
+    Mistake {
+        name: "1/pi twice",
+        hint: "the image is about pi times too dark: the diffuse BRDF's 1/pi is counted twice",
+        image: |c| Ok(Some(c.map(|l, _| l / std::f64::consts::PI))),
+    },
+    Mistake {
+        name: "no falloff",
+        hint: "the light does not fall off with distance: a point light gives I / (4 pi d^2), d the distance to the light",
+        image: no_falloff,
+    },
+    Mistake {
+        name: "upside down",
+        hint: "the image is upside down: image rows go from the top, so row i counts from the bottom as H - 1 - row",
+        image: |c| Ok(Some(c.flipped(true))),
+    },
+    Mistake {
+        name: "mirrored",
+        hint: "the image is mirrored left to right: the camera's x axis points right (check the sign of x in the pixel's direction)",
+        image: |c| Ok(Some(c.flipped(false))),
+    },
+    Mistake {
+        name: "shadow acne",
+        hint: "lit surfaces are speckled with dark dots (shadow acne): start shadow rays a little off the surface, P + epsilon N, not at P",
+        image: acne,
+    },
+    Mistake {
+        name: "inverted index",
+        hint: "the glass bends rays the wrong way: going into glass, eta = n1 / n2 = 1 / 1.5; coming out, 1.5",
+        image: inverted_index,
+    },
+    Mistake {
+        name: "light counted twice",
+        hint: "the light is counted twice: with light sampling, a bounced ray that meets the light must not add its emission again",
+        image: light_twice,
+    },
+    Mistake {
+        name: "bounce weight",
+        hint: "the indirect light is off while the direct light is right: the weight of a bounce must match how its direction was drawn (cosine-weighted directions: albedo; uniform ones: 2 albedo cos(theta))",
+        image: bounce_weight,
+    },
+    Mistake {
+        name: "texture gamma",
+        hint: "the texture looks washed out: texel values are gamma-encoded; use (v / 255)^2.2 as the albedo",
+        image: |c| {
+            c.textured(|texel| image::Rgb(texel.0.map(|v| 255.0 * (v / 255.0).powf(1.0 / 2.2))))
+        },
+    },
+    Mistake {
+        name: "texture v flipped",
+        hint: "the texture is upside down on the mesh: v runs from the bottom of the picture, so the texel row is (1 - v) H",
+        image: |c| c.textured(|texture| texture),
+    },
+];
+
+/// The mistake whose image the student's fits, if one does: it must differ in at
+/// most half as many places as the stage's own image does (`differing`).
+pub fn best_explanation(
+    c: &Candidates,
+    differing: f64,
+) -> Result<Option<&'static Mistake>, SceneError> {
+    let mut best: Option<(f64, &Mistake)> = None;
+    for mistake in MISTAKES {
+        let Some(film) = (mistake.image)(c)? else {
+            continue;
+        };
+        let share = c.share_differing(c.student, &film);
+        if share <= differing / 2.0 && best.is_none_or(|(b, _)| share < b) {
+            best = Some((share, mistake));
+        }
+    }
+    Ok(best.map(|(_, m)| m))
+}
+
+impl Candidates<'_> {
+    /// The stage's display gamma.
+    fn gamma(&self) -> f64 {
+        crate::maths::to_double(self.expected.scene.settings.gamma)
+    }
+
+    /// Whether the stage corrects gamma, so that a mistake of gamma shows.
+    fn gamma_applies(&self) -> bool {
+        self.gamma() != 1.0
+    }
+
+    /// The reference film with each radiance `l` replaced by `f(l, gamma)`.
+    fn map(&self, f: impl Fn(f64, f64) -> f64) -> Film {
+        let g = self.gamma();
+        let mut film = self.film.clone();
+        for pixel in &mut film.pixels {
+            *pixel = pixel.map(|v| f(crate::maths::to_double(v), g) as Real);
+        }
+        film
+    }
+
+    /// The reference film upside down (`vertically`) or mirrored.
+    fn flipped(&self, vertically: bool) -> Film {
+        let (w, h) = (self.film.width as usize, self.film.height as usize);
+        let mut film = self.film.clone();
+        for (i, pixel) in film.pixels.iter_mut().enumerate() {
+            let (x, y) = (i % w, i / w);
+            let (sx, sy) = if vertically {
+                (x, h - 1 - y)
+            } else {
+                (w - 1 - x, y)
+            };
+            *pixel = self.film.pixels[sy * w + sx];
+        }
+        film
+    }
+
+    /// How much of the student's image differs from `film`, compared as the stage's
+    /// own image is.
+    pub fn share_differing(&self, student: &RgbImage, film: &Film) -> f64 {
+        let gamma = self.expected.scene.settings.gamma;
+        if self.expected.deterministic {
+            compare_pixels(student, &displayed(film, gamma), 3).share()
+        } else {
+            let linear = Linear::from_rgb8(student, gamma);
+            compare_blocks(&linear, &Linear::from_film(film, gamma), gamma).share()
+        }
+    }
+
+    /// The samples of a Monte Carlo render made for a mistake: half the course's.
+    fn samples(&self) -> u32 {
+        (self.expected.scene.settings.samples / 2).max(1)
+    }
+
+    /// The stage rendered with its scene file's text changed by `edit`.
+    fn variant(&self, edit: impl Fn(&str) -> String) -> Result<Film, SceneError> {
+        self.source.film(
+            &edit(self.source.stage.source),
+            self.samples(),
+            Some(0x7e57),
+        )
+    }
+
+    /// For a textured stage, the stage rendered with its texture changed texel by
+    /// texel by `change` (each channel's 8-bit value) and then flipped upside down if
+    /// `change` is the identity, that is when the v coordinate is the mistake.
+    fn textured(
+        &self,
+        change: impl Fn(image::Rgb<f64>) -> image::Rgb<f64>,
+    ) -> Result<Option<Film>, SceneError> {
+        let Some(texture) = self
+            .expected
+            .scene
+            .meshes
+            .iter()
+            .find_map(|m| m.texture_file.clone())
+        else {
+            return Ok(None);
+        };
+        if !self.source.stage.source.contains("textured = true") {
+            return Ok(None);
+        }
+        let Ok(picture) = image::open(&texture).map(|p| p.to_rgb8()) else {
+            return Ok(None);
+        };
+        let changed = image::RgbImage::from_fn(picture.width(), picture.height(), |x, y| {
+            let v = image::Rgb(picture.get_pixel(x, y).0.map(f64::from));
+            image::Rgb(change(v).0.map(|c| c.round().clamp(0.0, 255.0) as u8))
+        });
+        let flip = changed == picture;
+        let changed = if flip {
+            image::imageops::flip_vertical(&changed)
+        } else {
+            changed
+        };
+        let file = self.source.cache.join(format!(
+            "texture-{}.png",
+            if flip { "flipped" } else { "raw" }
+        ));
+        if std::fs::create_dir_all(self.source.cache).is_err() || changed.save(&file).is_err() {
+            return Ok(None);
+        }
+        let texture_line = format!("textured = true\ntexture = {:?}", file.to_string_lossy());
+        self.variant(|text| text.replace("textured = true", &texture_line))
+            .map(Some)
+    }
+}
+
+/// The image of a point-light stage whose light does not fall off: the light
+/// reflected at each pixel's first hit multiplied by `4 pi d^2`.
+fn no_falloff(c: &Candidates) -> Result<Option<Film>, SceneError> {
+    let scene = &c.expected.scene;
+    let Some(Light::Point(light)) = scene.light else {
+        return Ok(None);
+    };
+    let mut film = c.film.clone();
+    let camera = scene.camera;
+    for (i, pixel) in film.pixels.iter_mut().enumerate() {
+        let (row, column) = (i as u32 / camera.width, i as u32 % camera.width);
+        if let Some(hit) = scene.intersect(&camera.ray(row, column))
+            && matches!(hit.material, Material::Diffuse { .. })
+        {
+            let d2 = (light.position - hit.point).length_squared();
+            *pixel = (*pixel - hit.emission) * (4.0 * PI * d2) + hit.emission;
+        }
+    }
+    Ok(Some(film))
+}
+
+/// The image of a stage with glass whose refractive indices are swapped.
+fn inverted_index(c: &Candidates) -> Result<Option<Film>, SceneError> {
+    let text = c.source.stage.source;
+    let Some(start) = text.find("glass = ") else {
+        return Ok(None);
+    };
+    let number: String = text[start + 8..]
+        .chars()
+        .take_while(|ch| ch.is_ascii_digit() || *ch == '.')
+        .collect();
+    let Ok(index) = number.parse::<f64>() else {
+        return Ok(None);
+    };
+    let inverse = format!("glass = {}", 1.0 / index);
+    let film = if c.expected.deterministic {
+        c.source.film(
+            &text.replace(&format!("glass = {number}"), &inverse),
+            1,
+            None,
+        )?
+    } else {
+        c.variant(|t| t.replace(&format!("glass = {number}"), &inverse))?
+    };
+    Ok(Some(film))
+}
+
+/// The stage's direct light alone: its scene with `indirect = false`.
+fn direct_only(c: &Candidates) -> Result<Film, SceneError> {
+    c.variant(|text| text.replace("indirect = true", "indirect = false"))
+}
+
+/// The image of a light-sampling stage that counts the light twice: once sampled,
+/// once more when a bounced ray meets it; about the stage's image plus its direct
+/// light.
+fn light_twice(c: &Candidates) -> Result<Option<Film>, SceneError> {
+    if !c.expected.scene.settings.light_sampling || !c.expected.scene.settings.indirect {
+        return Ok(None);
+    }
+    let direct = direct_only(c)?;
+    let mut film = c.film.clone();
+    for (a, b) in film.pixels.iter_mut().zip(&direct.pixels) {
+        *a += *b;
+    }
+    Ok(Some(film))
+}
+
+/// The image of a stage whose indirect light is off by a factor: its direct light
+/// plus its indirect light (the rest) times the factor `k` that fits the student's
+/// image best, when `k` is at least 15% away from 1.
+fn bounce_weight(c: &Candidates) -> Result<Option<Film>, SceneError> {
+    if !c.expected.scene.settings.indirect || c.expected.deterministic {
+        return Ok(None);
+    }
+    let direct = direct_only(c)?;
+    let gamma = c.expected.scene.settings.gamma;
+    let s = Linear::from_rgb8(c.student, gamma);
+    let (r, d) = (
+        Linear::from_film(&c.film, gamma),
+        Linear::from_film(&direct, gamma),
+    );
+    let (mut num, mut den) = (0.0, 0.0);
+    for ((s, r), d) in s.values.iter().zip(&r.values).zip(&d.values) {
+        let white = 255f64.powf(crate::maths::to_double(gamma)) * 0.999;
+        if *s < white && *r < white {
+            num += (s - d) * (r - d);
+            den += (r - d) * (r - d);
+        }
+    }
+    let k = if den > 0.0 { num / den } else { 1.0 };
+    if (k - 1.0).abs() < 0.15 {
+        return Ok(None);
+    }
+    let mut film = c.film.clone();
+    for (a, b) in film.pixels.iter_mut().zip(&direct.pixels) {
+        *a = *b + (*a - *b) * k as Real;
+    }
+    Ok(Some(film))
+}
+
+/// For a deterministic stage with shadow rays, the reference with the student's
+/// isolated dark pixels on lit surfaces made black: it fits an image speckled by
+/// shadow acne, and is the reference itself for any other.
+fn acne(c: &Candidates) -> Result<Option<Film>, SceneError> {
+    let settings = c.expected.scene.settings;
+    if !settings.shadows || !c.expected.deterministic {
+        return Ok(None);
+    }
+    let reference = displayed(&c.film, settings.gamma);
+    let (w, h) = reference.dimensions();
+    let brightness = |image: &RgbImage, x: u32, y: u32| {
+        image
+            .get_pixel(x, y)
+            .0
+            .iter()
+            .map(|&v| u32::from(v))
+            .sum::<u32>()
+    };
+    let dark = |x: u32, y: u32| {
+        let r = brightness(&reference, x, y);
+        r >= 60 && brightness(c.student, x, y) * 10 <= r * 4
+    };
+    let mut film = c.film.clone();
+    for y in 1..h.saturating_sub(1) {
+        for x in 1..w.saturating_sub(1) {
+            let lit_around = [(x - 1, y), (x + 1, y), (x, y - 1), (x, y + 1)]
+                .iter()
+                .filter(|&&(i, j)| !dark(i, j))
+                .count();
+            if dark(x, y) && lit_around >= 3 {
+                film.pixels[(y * w + x) as usize] = crate::maths::Colour::ZERO;
+            }
+        }
+    }
+    Ok(Some(film))
+}

@@ -1,0 +1,279 @@
+//! `raycourse check <stage> <image>`: is a student's image of a stage right, and if
+//! not, what differs, where, and which classic mistake explains it;
+//! `raycourse check --all DIR` grades a folder of them.
+
+use std::num::NonZeroUsize;
+use std::path::{Path, PathBuf};
+
+use clap::builder::PossibleValuesParser;
+use clap::{ArgMatches, FromArgMatches, Parser};
+use image::RgbImage;
+use indicatif::{ProgressBar, ProgressStyle};
+use raycourse::check::expected::Source;
+use raycourse::check::{Report, Verdict, check};
+use raycourse::{Stage, stages};
+
+use crate::commands::Verb;
+use crate::commands::failure::Failure;
+use crate::commands::options::thread_pool;
+use crate::commands::output::write;
+
+/// Check an image of a stage made by your own renderer, in any language: render
+/// the stage's reference at the image's size (cached), compare, and say what
+/// differs, where, and the likely mistake. Exit code 0: it matches; 1: it differs;
+/// 2: bad input.
+#[derive(Parser)]
+#[command(name = "check")]
+struct CheckArgs {
+    /// The stage (see `list`).
+    #[arg(required_unless_present = "all", value_parser = PossibleValuesParser::new(stages().map(|s| s.name)))]
+    stage: Option<String>,
+    /// Your image of it (PNG or JPEG, any size).
+    #[arg(required_unless_present = "all")]
+    image: Option<PathBuf>,
+    /// Grade a folder of images named after the stages (`glass.png`, ...): a table,
+    /// and a CSV grading sheet.
+    #[arg(long, conflicts_with_all = ["stage", "image"])]
+    all: Option<PathBuf>,
+    /// Write a picture of the differences (differing pixels or blocks in red).
+    #[arg(long)]
+    diff: Option<PathBuf>,
+    /// The grading sheet of `--all` (default: `grades.csv` in the folder).
+    #[arg(long)]
+    csv: Option<PathBuf>,
+    /// Folder of cached reference images.
+    #[arg(long, default_value = "out/reference")]
+    cache: PathBuf,
+    /// Worker threads (default: one per core).
+    #[arg(long)]
+    threads: Option<NonZeroUsize>,
+    /// Hide the progress bar.
+    #[arg(long, short)]
+    quiet: bool,
+}
+
+/// The `check` command (the whole course: session 7).
+pub const VERB: Verb = Verb {
+    session: 7,
+    command: <CheckArgs as clap::CommandFactory>::command,
+    run,
+};
+
+fn run(matches: &ArgMatches) -> Result<(), Failure> {
+    let args = CheckArgs::from_arg_matches(matches)?;
+    if let Some(dir) = &args.all {
+        return grade(&args, dir);
+    }
+    let name = args
+        .stage
+        .as_deref()
+        .expect("clap requires a stage without --all");
+    let stage = stages()
+        .find(|s| s.name == name)
+        .expect("clap only accepts this build's stages");
+    let path = args
+        .image
+        .as_deref()
+        .expect("clap requires an image without --all");
+    let image = read_image(path)?;
+    let report = check_one(&args, stage, &image, path)?;
+    print_report(stage, &report);
+    if let Some(diff) = &args.diff {
+        let picture = report.difference_image(&image);
+        let png = raycourse::render::png::encode_rgb8(
+            picture.as_raw(),
+            picture.width(),
+            picture.height(),
+        );
+        write(diff, &png)?;
+    }
+    match report.verdict {
+        Verdict::Matches => Ok(()),
+        Verdict::Differs => std::process::exit(1),
+    }
+}
+
+/// The image at `path`, as 8-bit RGB; a bad input otherwise.
+fn read_image(path: &Path) -> Result<RgbImage, Failure> {
+    let image = image::open(path).map_err(|e| {
+        Failure::Input(format!(
+            "{}: not a PNG or JPEG image that can be read: {e}",
+            path.display()
+        ))
+    })?;
+    Ok(image.to_rgb8())
+}
+
+/// Checks `image` (read from `path`) against `stage`, rendering on the options'
+/// threads with a progress bar.
+fn check_one(
+    args: &CheckArgs,
+    stage: &Stage,
+    image: &RgbImage,
+    path: &Path,
+) -> Result<Report, Failure> {
+    let pool = thread_pool(args.threads)?;
+    let bar = if args.quiet {
+        ProgressBar::hidden()
+    } else {
+        let style = ProgressStyle::with_template("{msg} {spinner} {pos} rows")
+            .expect("the template is valid");
+        ProgressBar::new_spinner()
+            .with_style(style)
+            .with_message(format!("{}: reference", stage.name))
+    };
+    let progress = |_| bar.inc(1);
+    let source = Source {
+        stage,
+        size: image.dimensions(),
+        cache: &args.cache,
+        progress: &progress,
+    };
+    let lossy = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("jpg") || e.eq_ignore_ascii_case("jpeg"));
+    let report = pool.install(|| check(&source, image, lossy));
+    bar.finish_and_clear();
+    Ok(report?)
+}
+
+/// Prints what `report` says of `stage`.
+fn print_report(stage: &Stage, report: &Report) {
+    let unit = if report.outcome.cell == 1 {
+        "pixels"
+    } else {
+        "blocks of 8 x 8 pixels"
+    };
+    let share = 100.0 * report.outcome.share();
+    match report.verdict {
+        Verdict::Matches => println!(
+            "{}: matches ({share:.1}% of {unit} differ, within what is allowed)",
+            stage.name
+        ),
+        Verdict::Differs => println!("{}: differs ({share:.1}% of {unit} differ)", stage.name),
+    }
+    let [r, g, b] = report.ratio;
+    println!("  brightness against the reference: red x{r:.2}, green x{g:.2}, blue x{b:.2}");
+    if report.verdict == Verdict::Differs {
+        let places: Vec<String> = report
+            .regions
+            .iter()
+            .take(5)
+            .map(|(name, s)| format!("{name} ({:.0}%)", 100.0 * s))
+            .collect();
+        println!("  where: {}", places.join(", "));
+    }
+    if let Some((ratio, samples)) = report.noise.filter(|_| report.verdict == Verdict::Matches) {
+        let equivalent = f64::from(samples) / ratio.max(1e-9);
+        println!(
+            "  noise: {ratio:.2} times the variance of a render at the course's {samples} samples per pixel (as from about {:.0} samples)",
+            equivalent.min(1e6)
+        );
+    }
+    match report.hint {
+        Some(mistake) => println!("  hint ({}): {}", mistake.name, mistake.hint),
+        None if report.verdict == Verdict::Differs => println!(
+            "  hint: no classic mistake explains the difference; compare with `raycourse {} --out reference.png`",
+            stage_command(stage)
+        ),
+        None => {}
+    }
+}
+
+/// The command that renders `stage`, such as `s2 glass`.
+fn stage_command(stage: &Stage) -> String {
+    format!("s{} {}", stage.session, stage.name)
+}
+
+/// Grades the images of the folder `dir`: one row per stage of the build.
+fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
+    if !dir.is_dir() {
+        return Err(Failure::Input(format!("{}: not a folder", dir.display())));
+    }
+    let mut csv =
+        String::from("stage,session,figure,verdict,differing,red,green,blue,noise,hint\n");
+    let mut all_match = true;
+    println!("{:<17} {:<10} hint", "stage", "verdict");
+    for stage in stages() {
+        let found = ["png", "jpg", "jpeg"]
+            .iter()
+            .map(|e| dir.join(format!("{}.{e}", stage.name)))
+            .find(|p| p.exists());
+        let row = match found {
+            None => Row::missing(),
+            Some(path) => match read_image(&path) {
+                Err(failure) => Row::unreadable(failure),
+                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?),
+            },
+        };
+        all_match &= row.verdict == "matches" || row.verdict == "missing";
+        println!("{:<17} {:<10} {}", stage.name, row.verdict, row.hint);
+        csv += &format!(
+            "{},{},{},{},{}\n",
+            stage.name,
+            stage.session,
+            stage.figure.map_or(String::new(), |f| f.to_string()),
+            row.verdict,
+            row.figures
+        );
+    }
+    let sheet = args.csv.clone().unwrap_or_else(|| dir.join("grades.csv"));
+    write(&sheet, csv.as_bytes())?;
+    println!("grading sheet -> {}", sheet.display());
+    if all_match {
+        Ok(())
+    } else {
+        std::process::exit(1)
+    }
+}
+
+/// One row of the grading sheet.
+struct Row {
+    verdict: &'static str,
+    hint: String,
+    /// The CSV columns after the verdict.
+    figures: String,
+}
+
+impl Row {
+    /// No image of the stage in the folder.
+    fn missing() -> Row {
+        Row {
+            verdict: "missing",
+            hint: String::new(),
+            figures: ",,,,,".into(),
+        }
+    }
+
+    /// An image that cannot be read.
+    fn unreadable(failure: Failure) -> Row {
+        let hint = failure.to_string();
+        Row {
+            verdict: "unreadable",
+            figures: format!(",,,,,\"{}\"", hint.replace('"', "'")),
+            hint,
+        }
+    }
+
+    /// The row of a checked image.
+    fn of(report: &Report) -> Row {
+        let verdict = match report.verdict {
+            Verdict::Matches => "matches",
+            Verdict::Differs => "differs",
+        };
+        let hint = report.hint.map_or(String::new(), |m| m.name.to_owned());
+        let [r, g, b] = report.ratio;
+        let noise = report
+            .noise
+            .map_or(String::new(), |(n, _)| format!("{n:.3}"));
+        let figures = format!(
+            "{:.4},{r:.4},{g:.4},{b:.4},{noise},{hint}",
+            report.outcome.share()
+        );
+        Row {
+            verdict,
+            hint,
+            figures,
+        }
+    }
+}
