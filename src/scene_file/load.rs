@@ -4,16 +4,26 @@
 use std::num::NonZeroU32;
 use std::path::Path;
 
-use crate::camera::Camera;
-use crate::geometry::Sphere;
-use crate::lights::{Light, PointLight};
 use crate::maths::Real;
 use crate::maths::values::Finite;
-use crate::scene::{Scene, Settings};
+use crate::scene::Scene;
 use crate::scene_file::consistency::check_consistency;
 use crate::scene_file::format::SceneFile;
 use crate::scene_file::sessions::{check_materials, check_sessions};
 use crate::scene_file::{SceneError, one_line};
+
+#[cfg(not(feature = "s3"))]
+use crate::scene_file::session1::scene;
+#[cfg(all(feature = "s3", not(feature = "s4")))]
+use crate::scene_file::session3::scene;
+#[cfg(all(feature = "s4", not(feature = "s5")))]
+use crate::scene_file::session4::scene;
+#[cfg(all(feature = "s5", not(feature = "s6")))]
+use crate::scene_file::session5::scene;
+#[cfg(all(feature = "s6", not(feature = "s7")))]
+use crate::scene_file::session6::scene;
+#[cfg(feature = "s7")]
+use crate::scene_file::session7::scene;
 
 /// Render settings given on the command line, replacing those of the scene file
 /// before it is checked.
@@ -60,8 +70,9 @@ pub fn load_scene(path: &Path, overrides: &Overrides) -> Result<Scene, SceneErro
 
 // ANCHOR: parse_scene
 /// Parses and checks scene-file text, with `overrides` applied; `path` names it in
-/// error messages and files it refers to are found next to it. The scene of session
-/// 1 is built first; each later session then adds what it brings.
+/// error messages and files it refers to are found next to it. The scene is built by
+/// the latest session of this build, each session starting from the scene of the one
+/// before and adding what it brings.
 pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
     check_materials(source, path)?;
     let mut file = read_file(source, path)?;
@@ -74,18 +85,7 @@ pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<S
         })?;
     check_sessions(&file, path)?;
     check_consistency(&file, path)?;
-    let scene = file.scene();
-    #[cfg(feature = "s3")]
-    let scene = crate::scene_file::session3::add(&file, scene);
-    #[cfg(feature = "s4")]
-    let scene = crate::scene_file::session4::add(&file, scene);
-    #[cfg(feature = "s5")]
-    let scene = crate::scene_file::session5::add(&file, scene, path)?;
-    #[cfg(feature = "s6")]
-    let scene = crate::scene_file::session6::add(&file, scene);
-    #[cfg(feature = "s7")]
-    let scene = crate::scene_file::session7::add(&file, scene, path)?;
-    Ok(scene)
+    scene(&file, path)
 }
 // ANCHOR_END: parse_scene
 
@@ -117,44 +117,4 @@ fn line_and_column(source: &str, offset: usize) -> (usize, usize) {
     let line = before.matches('\n').count() + 1;
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
     (line, column)
-}
-
-impl SceneFile {
-    // ANCHOR: scene
-    /// The scene as session 1 reads the file: the camera, the spheres, a point light
-    /// and the render settings.
-    pub fn scene(&self) -> Scene {
-        let r = &self.render;
-        let fov = self.camera.fov.0.to_radians();
-        let camera = Camera::new(self.camera.position.0, fov, r.width.get(), r.height.get());
-        let spheres = self.spheres.iter().map(|s| Sphere {
-            centre: s.centre.0,
-            radius: s.radius.0,
-            material: s.material,
-            emission: s.emission.map_or(crate::maths::Colour::ZERO, |e| e.0),
-        });
-        let light = self.light.as_ref().map(|l| {
-            Light::Point(PointLight {
-                position: l.position.0,
-                intensity: l.intensity.0,
-            })
-        });
-        Scene::new(camera, spheres.collect(), light, self.settings())
-    }
-    // ANCHOR_END: scene
-
-    /// The render settings of the `[render]` table.
-    pub fn settings(&self) -> Settings {
-        let r = &self.render;
-        Settings {
-            samples: r.samples.get(),
-            bounces: r.bounces,
-            seed: r.seed,
-            gamma: r.gamma.map_or(1.0, |g| g.0),
-            shadows: r.shadows,
-            indirect: r.indirect,
-            light_sampling: r.light_sampling,
-            russian_roulette: r.russian_roulette.map(|p| p.0),
-        }
-    }
 }

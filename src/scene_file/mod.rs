@@ -8,7 +8,8 @@
 //! | [`features`] | 1 | which session this build was compiled for |
 //! | [`sessions`] | 1 | which session brings each key: "needs feature s2" |
 //! | [`consistency`] | 1 | values that do not go together |
-//! | [`load`] | 1 | reading a file into the scene of session 1, then the later sessions' parts |
+//! | [`load`] | 1 | reading a file: parsed, checked, and built by the latest session |
+//! | [`session1`] | 1 | the camera, the spheres, a point light and the settings |
 //! | [`session3`] | 3 | antialiasing |
 //! | [`session4`] | 4 | the sphere light and the thin lens |
 //! | [`session5`] | 5 | triangle meshes |
@@ -21,6 +22,7 @@ pub mod error;
 pub mod features;
 pub mod format;
 pub mod load;
+pub mod session1;
 pub mod sessions;
 pub mod stages;
 

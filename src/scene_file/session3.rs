@@ -1,14 +1,18 @@
 //! What session 3 adds to a scene file: antialiasing.
 
+use std::path::Path;
+
 use crate::camera::PixelFilter;
 use crate::scene::Scene;
 use crate::scene_file::format::SceneFile;
+use crate::scene_file::{SceneError, session1};
 
-/// Adds to `scene` what session 3 reads in `file`: the Gaussian jitter of camera
-/// rays (`camera.antialiasing`, its standard deviation in pixels).
-pub fn add(file: &SceneFile, mut scene: Scene) -> Scene {
+/// The scene of session 1 with what session 3 reads in `file`: the Gaussian jitter of
+/// camera rays (`camera.antialiasing`, its standard deviation in pixels).
+pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
+    let mut scene = session1::scene(file, path)?;
     if let Some(sigma) = file.camera.antialiasing {
         scene.camera.filter = PixelFilter::Gaussian { sigma: sigma.0 };
     }
-    scene
+    Ok(scene)
 }

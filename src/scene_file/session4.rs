@@ -1,13 +1,18 @@
 //! What session 4 adds to a scene file: a sphere light and a thin lens.
 
+use std::path::Path;
+
 use crate::camera::{Lens, ThinLens};
 use crate::lights::{Light, SphereLight};
 use crate::scene::Scene;
 use crate::scene_file::format::SceneFile;
+use crate::scene_file::{SceneError, session3};
 
-/// Adds to `scene` what session 4 reads in `file`: a light with a radius becomes a
-/// sphere light, whose body joins the spheres; `camera.lens` makes a thin lens.
-pub fn add(file: &SceneFile, mut scene: Scene) -> Scene {
+/// The scene of session 3 with what session 4 reads in `file`: a light with a radius
+/// becomes a sphere light, whose body joins the spheres; `camera.lens` makes a thin
+/// lens.
+pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
+    let mut scene = session3::scene(file, path)?;
     if let Some(light) = &file.light
         && let Some(radius) = light.radius
     {
@@ -22,5 +27,5 @@ pub fn add(file: &SceneFile, mut scene: Scene) -> Scene {
             focus: lens.focus.0,
         });
     }
-    scene
+    Ok(scene)
 }

@@ -10,12 +10,13 @@ use crate::maths::{Colour, Mat3, Vec3};
 use crate::meshes::{Mesh, MeshAlbedo, Placement, read_obj};
 use crate::scene::Scene;
 use crate::scene_file::format::{AccelerationSpec, MeshSpec, SceneFile, TriangleTestSpec};
-use crate::scene_file::{SceneError, one_line};
+use crate::scene_file::{SceneError, one_line, session4};
 
-/// Adds to `scene` what session 5 reads in `file`: its meshes, their OBJ files found
-/// next to the scene file at `path`, each placed, coloured, tested with the file's
-/// ray-triangle test, and searched by brute force or behind its bounding box.
-pub fn add(file: &SceneFile, mut scene: Scene, path: &Path) -> Result<Scene, SceneError> {
+/// The scene of session 4 with what session 5 reads in `file`: its meshes, their OBJ
+/// files found next to the scene file at `path`, each placed, coloured, tested with the
+/// file's ray-triangle test, and searched by brute force or behind its bounding box.
+pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
+    let mut scene = session4::scene(file, path)?;
     let test = match file.render.triangle_test.unwrap_or_default() {
         TriangleTestSpec::MollerTrumbore => TriangleTest::MollerTrumbore,
         TriangleTestSpec::Watertight => TriangleTest::Watertight,

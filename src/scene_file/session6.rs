@@ -1,17 +1,21 @@
 //! What session 6 adds to a scene file: bounding volume hierarchies and smooth
 //! normals.
 
+use std::path::Path;
+
 use std::sync::Arc;
 
 use crate::acceleration::{Bvh, FastBvh};
 use crate::scene::Scene;
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
+use crate::scene_file::{SceneError, session5};
 
-/// Adds to `scene` what session 6 reads in `file`: each mesh searched through a
-/// hierarchy when `render.acceleration` asks for one (the course's, or the fast one
-/// with leaves of at most `render.leaf_size` triangles, 8 by default), and shaded
-/// with its vertex normals only where `smooth_normals` says so.
-pub fn add(file: &SceneFile, mut scene: Scene) -> Scene {
+/// The scene of session 5 with what session 6 reads in `file`: each mesh searched
+/// through a hierarchy when `render.acceleration` asks for one (the course's, or the
+/// fast one with leaves of at most `render.leaf_size` triangles, 8 by default), and
+/// shaded with its vertex normals only where `smooth_normals` says so.
+pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
+    let mut scene = session5::scene(file, path)?;
     let leaf_size = file.render.leaf_size.map_or(8, |l| l.get());
     for (mesh, spec) in scene.meshes.iter_mut().zip(&file.meshes) {
         match file.render.acceleration {
@@ -23,5 +27,5 @@ pub fn add(file: &SceneFile, mut scene: Scene) -> Scene {
             mesh.normals.clear();
         }
     }
-    scene
+    Ok(scene)
 }

@@ -8,11 +8,12 @@ use crate::maths::Vec3;
 use crate::meshes::{Mesh, MeshAlbedo};
 use crate::scene::Scene;
 use crate::scene_file::format::{FilterSpec, MeshSpec, SceneFile};
-use crate::scene_file::{SceneError, one_line};
+use crate::scene_file::{SceneError, one_line, session6};
 
-/// Adds to `scene` what session 7 reads in `file`: textured meshes, and a camera
-/// aimed at `camera.look_at`, raised by `camera.plunge` degrees around it.
-pub fn add(file: &SceneFile, mut scene: Scene, path: &Path) -> Result<Scene, SceneError> {
+/// The scene of session 6 with what session 7 reads in `file`: textured meshes, and a
+/// camera aimed at `camera.look_at`, raised by `camera.plunge` degrees around it.
+pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
+    let mut scene = session6::scene(file, path)?;
     for (mesh, spec) in scene.meshes.iter_mut().zip(&file.meshes) {
         let asked = spec.textured || spec.texture.is_some() || spec.texture_filter.is_some();
         if asked && let Some(texture) = mesh_texture(spec, mesh, path)? {
