@@ -23,7 +23,8 @@ impl Tracer<'_> {
     // ANCHOR: light_sampling
     /// Light arriving straight from the sphere light at a diffuse point, estimated
     /// with one direction sampled towards the light:
-    /// `L = Le (albedo / pi) cos(theta) / pdf(w)`, 0 when an object is in the way.
+    /// `L = Le (albedo / pi) cos(theta) / pdf(w)`, 0 when an object is in the way
+    /// (the ray counted as one, and only the object it meets first looked up).
     pub fn sample_light(&mut self, light: &SphereLight, hit: &Hit, albedo: Colour) -> Colour {
         let (u1, u2) = (uniform(&mut self.rng), uniform(&mut self.rng));
         let Some((direction, pdf)) = light.sample(hit.point, u1, u2) else {
@@ -33,8 +34,9 @@ impl Tracer<'_> {
         if cos <= 0.0 {
             return Colour::ZERO;
         }
-        match self.trace(&hit.spawn(direction)) {
-            Some(seen) if seen.object == light.object => light.emission * albedo / PI * cos / pdf,
+        self.rays += 1;
+        match self.scene.nearest(&hit.spawn(direction)) {
+            Some((_, seen)) if seen == light.object => light.emission * albedo / PI * cos / pdf,
             _ => Colour::ZERO,
         }
     }

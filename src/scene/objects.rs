@@ -8,6 +8,8 @@ use crate::scene::Settings;
 
 #[cfg(feature = "s5")]
 use crate::meshes::Mesh;
+#[cfg(feature = "s3")]
+use crate::scene::sphere_lanes::SphereLanes;
 
 // ANCHOR: scene
 /// A scene ready to render. Later sessions add fields (the meshes of session 5);
@@ -27,6 +29,10 @@ pub struct Scene {
     pub light: Option<Light>,
     /// How it is rendered.
     pub settings: Settings,
+    /// The spheres by coordinate, four at a time (session 3), made from `spheres`
+    /// at the first ray traced.
+    #[cfg(feature = "s3")]
+    pub lanes: std::sync::OnceLock<SphereLanes>,
 }
 // ANCHOR_END: scene
 
@@ -77,6 +83,33 @@ impl Scene {
     /// The nearest hit of `ray` among all objects: every sphere is tested and the
     /// smallest positive distance wins.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let nearest = self.nearest_sphere(ray);
+        #[cfg(feature = "s5")]
+        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
+            return Some(hit);
+        }
+        nearest.map(|(t, i)| self.spheres[i].hit_at(ray, t, i))
+    }
+    // ANCHOR_END: nearest
+
+    /// The distance to the nearest object that `ray` hits and that object's index:
+    /// what [`Scene::intersect`] finds, without the hit record a shadow ray has no
+    /// use for.
+    pub fn nearest(&self, ray: &Ray) -> Option<(Real, usize)> {
+        let nearest = self.nearest_sphere(ray);
+        #[cfg(feature = "s5")]
+        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
+            return Some((hit.t, hit.object));
+        }
+        nearest
+    }
+
+    // ANCHOR: nearest_sphere
+    /// The distance to the nearest sphere that `ray` hits and that sphere's index:
+    /// every sphere is tested and the smallest positive distance wins, the first
+    /// sphere on a tie.
+    #[cfg(not(feature = "s3"))]
+    pub fn nearest_sphere(&self, ray: &Ray) -> Option<(Real, usize)> {
         let mut nearest: Option<(Real, usize)> = None;
         for (i, sphere) in self.spheres.iter().enumerate() {
             if let Some(t) = sphere.intersect(ray)
@@ -85,11 +118,19 @@ impl Scene {
                 nearest = Some((t, i));
             }
         }
-        #[cfg(feature = "s5")]
-        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
-            return Some(hit);
-        }
-        nearest.map(|(t, i)| self.spheres[i].hit_at(ray, t, i))
+        nearest
     }
-    // ANCHOR_END: nearest
+    // ANCHOR_END: nearest_sphere
+
+    // ANCHOR: nearest_sphere_lanes
+    /// The distance to the nearest sphere that `ray` hits and that sphere's index,
+    /// from session 3 on: the same answer, to the last bit, with the spheres tested
+    /// four at a time ([`SphereLanes`], made at the first ray).
+    #[cfg(feature = "s3")]
+    pub fn nearest_sphere(&self, ray: &Ray) -> Option<(Real, usize)> {
+        self.lanes
+            .get_or_init(|| SphereLanes::new(&self.spheres))
+            .nearest(ray)
+    }
+    // ANCHOR_END: nearest_sphere_lanes
 }

@@ -7,8 +7,10 @@ use crate::scene::Scene;
 impl Scene {
     // ANCHOR: occluded
     /// Whether any object lies on `ray` closer than `distance`: the shadow-ray test.
+    /// It finds the nearest object, as [`Scene::intersect`] does, but needs only its
+    /// distance ([`Scene::nearest`]).
     pub fn occluded(&self, ray: &Ray, distance: Real) -> bool {
-        self.intersect(ray).is_some_and(|hit| hit.t < distance)
+        self.nearest(ray).is_some_and(|(t, _)| t < distance)
     }
     // ANCHOR_END: occluded
 }
