@@ -40,10 +40,13 @@ struct AnimateArgs {
 
 /// The `animate` command (session 7: the aimed camera).
 pub const VERB: Verb = Verb {
+    rank: 5,
     session: 7,
     command: <AnimateArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = AnimateArgs::from_arg_matches(matches)?;

@@ -26,10 +26,13 @@ struct BenchArgs {
 
 /// The `bench` command.
 pub const VERB: Verb = Verb {
+    rank: 4,
     session: 1,
     command: <BenchArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 /// The time the course reported for the stage of figure `figure` on its own machine.
 fn course_time(figure: Option<u32>) -> &'static str {

@@ -54,10 +54,13 @@ struct CheckArgs {
 
 /// The `check` command (the whole course: session 7).
 pub const VERB: Verb = Verb {
+    rank: 9,
     session: 7,
     command: <CheckArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = CheckArgs::from_arg_matches(matches)?;

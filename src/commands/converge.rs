@@ -71,10 +71,13 @@ struct ConvergeArgs {
 
 /// The `converge` command.
 pub const VERB: Verb = Verb {
+    rank: 6,
     session: 3,
     command: <ConvergeArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 /// Seed of every reference render (the ladder keeps the scene's seed), so that the
 /// reference's own remaining noise is independent of the renders it measures.

@@ -25,10 +25,13 @@ struct FiguresArgs {
 
 /// The `figures` command.
 pub const VERB: Verb = Verb {
+    rank: 3,
     session: 1,
     command: <FiguresArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = FiguresArgs::from_arg_matches(matches)?;

@@ -13,10 +13,13 @@ struct ListArgs {}
 
 /// The `list` command.
 pub const VERB: Verb = Verb {
+    rank: 1,
     session: 1,
     command: <ListArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 fn run(_: &ArgMatches) -> Result<(), Failure> {
     println!(

@@ -31,6 +31,8 @@ use failure::Failure;
 /// what it does with them.
 #[derive(Clone, Copy)]
 pub struct Verb {
+    /// Where it stands in `raycourse --help`: the commonest first.
+    pub rank: u32,
     /// The first session whose build has the command.
     pub session: u32,
     /// Its name, help and arguments.
@@ -39,23 +41,17 @@ pub struct Verb {
     pub run: fn(&ArgMatches) -> Result<(), Failure>,
 }
 
-/// Every command of this build but the sessions' own (`s1` to `s7`).
+inventory::collect!(Verb);
+
+/// Every command of this build but the sessions' own (`s1` to `s7`), in the order
+/// of their rank. Each command's file registers it; the files of later sessions'
+/// commands are only compiled in those sessions' builds.
 pub fn verbs() -> Vec<Verb> {
-    let verbs = vec![
-        list::VERB,
-        render::VERB,
-        figures::VERB,
-        bench::VERB,
-        animate::VERB,
-    ];
-    #[cfg(feature = "s3")]
-    let verbs = [verbs, vec![converge::VERB, plot::VERB]].concat();
-    #[cfg(feature = "s6")]
-    let verbs = [verbs, vec![rays::VERB]].concat();
-    #[cfg(feature = "s7")]
-    let verbs = [verbs, vec![check::VERB]].concat();
-    verbs
+    let mut verbs: Vec<Verb> = inventory::iter::<Verb>
         .into_iter()
+        .copied()
         .filter(|v| v.session <= raycourse::scene_file::SESSION)
-        .collect()
+        .collect();
+    verbs.sort_by_key(|v| v.rank);
+    verbs
 }

@@ -35,10 +35,13 @@ struct PlotArgs {
 
 /// The `plot` command.
 pub const VERB: Verb = Verb {
+    rank: 7,
     session: 3,
     command: <PlotArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = PlotArgs::from_arg_matches(matches)?;

@@ -53,10 +53,13 @@ enum BvhKind {
 
 /// The `rays` command (session 6: the hierarchy).
 pub const VERB: Verb = Verb {
+    rank: 8,
     session: 6,
     command: <RaysArgs as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = RaysArgs::from_arg_matches(matches)?;

@@ -21,10 +21,13 @@ struct RenderFile {
 
 /// The `render` command.
 pub const VERB: Verb = Verb {
+    rank: 2,
     session: 1,
     command: <RenderFile as clap::CommandFactory>::command,
     run,
 };
+
+inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = RenderFile::from_arg_matches(matches)?;
