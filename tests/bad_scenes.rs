@@ -262,3 +262,44 @@ fn russian_roulette_survival_is_a_probability() {
          most 1, found 1.5"
     );
 }
+
+#[test]
+fn samplers_are_named_and_noise_is_positive() {
+    let error = |line: &str, overrides: &Overrides| {
+        let text = GOOD.replace("height = 48", &format!("height = 48\n{line}"));
+        parse_scene(&text, Path::new("room.toml"), overrides).map(|_| ())
+    };
+    let halton = error("sampler = \"halton\"", &Overrides::default()).unwrap_err();
+    assert_eq!(
+        halton.to_string(),
+        "room.toml:5:11: key `render.sampler`: unknown variant `halton`, expected one of \
+         `independent`, `stratified`, `sobol`"
+    );
+    let negative = error("noise = -0.1", &Overrides::default()).unwrap_err();
+    assert!(
+        negative
+            .to_string()
+            .starts_with("room.toml:5:9: key `render.noise`: expected a number greater than 0"),
+        "{negative}"
+    );
+    let from_the_command_line = Overrides {
+        noise: Some(0.0),
+        ..Overrides::default()
+    };
+    assert!(
+        error("", &from_the_command_line)
+            .unwrap_err()
+            .to_string()
+            .starts_with("room.toml: key `render.noise`: expected a number greater than 0"),
+    );
+    let sobol = error("sampler = \"sobol\"", &Overrides::default());
+    if SESSION >= 3 {
+        assert!(sobol.is_ok());
+    } else {
+        assert_eq!(
+            sobol.unwrap_err().to_string(),
+            "room.toml: key `render.sampler`: a choice of sampler needs feature s3: \
+             cargo run --features s3 -- ..."
+        );
+    }
+}

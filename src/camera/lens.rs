@@ -1,6 +1,6 @@
 //! The thin lens: depth of field from an aperture of finite size.
 
-use crate::maths::{PI, PixelRng, Real, Vec3, uniform};
+use crate::maths::{PI, PixelRng, Real, Vec3, uniform_pair};
 
 // ANCHOR: disk
 /// A point of the unit disk, uniformly distributed, from two uniform numbers in
@@ -64,7 +64,8 @@ impl ThinLens {
     /// aperture disk around the eye.
     pub fn refocus(&self, start: Vec3, direction: Vec3, rng: &mut PixelRng) -> (Vec3, Vec3) {
         let focus_point = start + direction * (self.focus / -direction.z);
-        let (x, y) = sample_disk(uniform(rng), uniform(rng));
+        let (u1, u2) = uniform_pair(rng);
+        let (x, y) = sample_disk(u1, u2);
         let origin = start + Vec3::new(x, y, 0.0) * self.aperture;
         (origin, focus_point - origin)
     }

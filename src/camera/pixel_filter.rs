@@ -1,7 +1,7 @@
 //! Where in its pixel a camera ray aims: the centre, or a point drawn around it.
 
 use crate::maths::sampling::sample_gaussian;
-use crate::maths::{PixelRng, Real, uniform};
+use crate::maths::{PixelRng, Real, uniform_pair};
 
 /// Where in its pixel a camera ray aims.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -25,7 +25,7 @@ impl PixelFilter {
         match *self {
             PixelFilter::Centre => (0.0, 0.0),
             PixelFilter::Gaussian { sigma } => {
-                let (u1, u2) = (uniform(rng), uniform(rng));
+                let (u1, u2) = uniform_pair(rng);
                 sample_gaussian(u1, u2, sigma)
             }
         }

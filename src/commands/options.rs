@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use raycourse::Overrides;
+use raycourse::maths::Real;
 
 use crate::commands::failure::Failure;
 
@@ -32,6 +33,15 @@ pub struct RenderArgs {
     /// Output PNG (default: out/<name>.png).
     #[arg(long)]
     pub out: Option<PathBuf>,
+    /// Adaptive sampling: each pixel takes samples until the estimated relative
+    /// standard error of its mean is below this (such as 0.02), up to 4 times `--spp`
+    /// (session 3).
+    #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
+    pub noise: Option<Real>,
+    /// Also write a grey PNG of the samples each pixel took, black for the fewest
+    /// and white for the most (session 3).
+    #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
+    pub noise_map: Option<PathBuf>,
     /// Hide the progress bar.
     #[arg(long, short)]
     pub quiet: bool,
@@ -47,6 +57,7 @@ impl RenderArgs {
             bounces: self.bounces,
             seed: self.seed,
             plunge: None,
+            noise: self.noise,
         }
     }
 }

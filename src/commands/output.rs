@@ -74,8 +74,24 @@ pub fn render_to_file(
         0 => String::new(),
         n => format!(", {n} non-finite samples dropped"),
     };
+    let taken = &timed.result.samples;
+    let average = taken.iter().map(|&n| f64::from(n)).sum::<f64>() / taken.len() as f64;
+    let adaptive = match taken.iter().any(|&n| n != scene.settings.samples) {
+        true => format!(", {average:.1} spp on average"),
+        false => String::new(),
+    };
+    if let Some(map) = &options.noise_map {
+        write(map, &sample_map(taken, scene))?;
+        let (fewest, most) = (taken.iter().min(), taken.iter().max());
+        println!(
+            "{label}: samples per pixel from {} (black) to {} (white) -> {}",
+            fewest.unwrap_or(&0),
+            most.unwrap_or(&0),
+            map.display()
+        );
+    }
     println!(
-        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{dropped} -> {}",
+        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{adaptive}{dropped} -> {}",
         scene.summary(),
         timed.seconds,
         timed.result.rays,
@@ -84,4 +100,17 @@ pub fn render_to_file(
         out.display()
     );
     Ok(())
+}
+
+/// The samples each pixel `taken`, as a grey PNG the size of `scene`'s image: black
+/// for the fewest, white for the most.
+fn sample_map(taken: &[u32], scene: &Scene) -> Vec<u8> {
+    let fewest = taken.iter().copied().min().unwrap_or(0);
+    let most = taken.iter().copied().max().unwrap_or(0);
+    let span = f64::from((most - fewest).max(1));
+    let grey: Vec<u8> = taken
+        .iter()
+        .flat_map(|&n| [(255.0 * f64::from(n - fewest) / span).round() as u8; 3])
+        .collect();
+    raycourse::render::png::encode_rgb8(&grey, scene.camera.width, scene.camera.height)
 }

@@ -4,7 +4,7 @@ use crate::geometry::Hit;
 use crate::integrator::Tracer;
 use crate::maths::frame::Frame;
 use crate::maths::sampling::sample_cosine_hemisphere;
-use crate::maths::{Colour, Vec3, uniform};
+use crate::maths::{Colour, Vec3, uniform_pair};
 
 impl Tracer<'_> {
     // ANCHOR: diffuse
@@ -25,7 +25,8 @@ impl Tracer<'_> {
     /// direction around `+z` ([`sample_cosine_hemisphere`]) turned into the frame
     /// `(T1, T2, N)` of the normal.
     pub fn cosine_direction(&mut self, hit: &Hit) -> Vec3 {
-        let local = sample_cosine_hemisphere(uniform(&mut self.rng), uniform(&mut self.rng));
+        let (u1, u2) = uniform_pair(&mut self.rng);
+        let local = sample_cosine_hemisphere(u1, u2);
         Frame::new(hit.normal).to_world(local)
     }
     // ANCHOR_END: cosine_direction

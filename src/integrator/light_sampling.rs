@@ -4,7 +4,7 @@
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
 use crate::lights::{Light, SphereLight};
-use crate::maths::{Colour, PI, uniform};
+use crate::maths::{Colour, PI, uniform_pair};
 
 impl Tracer<'_> {
     // ANCHOR: sphere_light
@@ -26,7 +26,7 @@ impl Tracer<'_> {
     /// `L = Le (albedo / pi) cos(theta) / pdf(w)`, 0 when an object is in the way
     /// (the ray counted as one, and only the object it meets first looked up).
     pub fn sample_light(&mut self, light: &SphereLight, hit: &Hit, albedo: Colour) -> Colour {
-        let (u1, u2) = (uniform(&mut self.rng), uniform(&mut self.rng));
+        let (u1, u2) = uniform_pair(&mut self.rng);
         let Some((direction, pdf)) = light.sample(hit.point, u1, u2) else {
             return Colour::ZERO;
         };

@@ -2,8 +2,10 @@
 //! one pixel.
 
 use crate::geometry::{Hit, Ray};
-use crate::maths::{PixelRng, pixel_rng};
 use crate::scene::Scene;
+
+#[cfg(feature = "s3")]
+use crate::maths::{PixelRng, pixel_rng};
 
 // ANCHOR: tracer
 /// Traces the rays of one pixel through a scene, counting them.
@@ -12,10 +14,13 @@ pub struct Tracer<'a> {
     pub scene: &'a Scene,
     /// Rays traced so far: camera, shadow and secondary rays.
     pub rays: u64,
+    /// Samples taken so far: one per pixel, many from session 3.
+    pub samples: u64,
     /// Samples whose radiance was NaN or infinite, left out of their pixel's mean
     /// (session 3).
     pub dropped: u64,
-    /// The random generator of the pixel being rendered (drawn from session 3 on).
+    /// The random numbers of the pixel being rendered (session 3).
+    #[cfg(feature = "s3")]
     pub rng: PixelRng,
 }
 // ANCHOR_END: tracer
@@ -26,7 +31,9 @@ impl<'a> Tracer<'a> {
         Self {
             scene,
             rays: 0,
+            samples: 0,
             dropped: 0,
+            #[cfg(feature = "s3")]
             rng: pixel_rng(scene.settings.seed, 0),
         }
     }

@@ -6,9 +6,10 @@ use crate::maths::Colour;
 
 // ANCHOR: pixel
 /// The radiance of pixel (`row`, `column`): that of the camera ray through its
-/// centre.
+/// centre, its one sample.
 pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Colour {
     let scene = tracer.scene;
+    tracer.samples += 1;
     let ray = scene.camera.ray(row, column);
     tracer.radiance(&ray, scene.settings.bounces)
 }

@@ -19,6 +19,9 @@ pub struct Render {
     pub film: Film,
     /// Rays traced: camera rays, shadow rays and secondary rays.
     pub rays: u64,
+    /// The samples each pixel took, row by row: one before session 3, the scene's
+    /// count after, more or fewer where adaptive sampling decides.
+    pub samples: Vec<u32>,
     /// Samples whose radiance was NaN or infinite, left out of their pixel's mean.
     pub dropped: u64,
 }
@@ -38,13 +41,17 @@ pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Rende
     let camera = scene.camera;
     let width = camera.width as usize;
     let mut pixels = vec![Colour::ZERO; width * camera.height as usize];
+    let mut samples = vec![0; pixels.len()];
     let (rays, dropped) = pixels
         .par_chunks_mut(width)
+        .zip(samples.par_chunks_mut(width))
         .enumerate()
-        .map(|(row, line)| {
+        .map(|(row, (line, taken))| {
             let mut tracer = Tracer::new(scene);
-            for (column, value) in line.iter_mut().enumerate() {
+            for (column, (value, taken)) in line.iter_mut().zip(taken).enumerate() {
+                let before = tracer.samples;
                 *value = pixel(&mut tracer, row as u32, column as u32);
+                *taken = (tracer.samples - before) as u32;
             }
             progress(u64::from(scene.settings.samples));
             (tracer.rays, tracer.dropped)
@@ -57,6 +64,7 @@ pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Rende
             pixels,
         },
         rays,
+        samples,
         dropped,
     }
 }

@@ -1,21 +1,30 @@
 //! How a scene is rendered: the settings of a scene file's `[render]` table.
 
+use smart_default::SmartDefault;
+
 use crate::maths::Real;
+
+#[cfg(feature = "s3")]
+use crate::scene::sampling::Sampling;
 
 // ANCHOR: settings
 /// How a scene is rendered. Every setting is read from the scene file; the later
-/// ones keep the course's first choices unless a scene asks for more.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// ones keep the course's first choices unless a scene asks for more. By default:
+/// one sample, five bounces, seed 0, linear output, and nothing more.
+#[derive(Clone, Copy, Debug, PartialEq, SmartDefault)]
 pub struct Settings {
     /// Camera rays averaged in each pixel (many from session 3).
+    #[default = 1]
     pub samples: u32,
     /// How many times a path may bounce off mirrors, glass (session 2) and diffuse
     /// surfaces (session 3) before it stops.
+    #[default = 5]
     pub bounces: u32,
     /// Seed of the per-pixel random generators (session 3).
     pub seed: u64,
     /// Display gamma (session 2): an 8-bit pixel is `min(255, L^(1/gamma))`; 1 leaves
     /// radiance as is.
+    #[default = 1.0]
     pub gamma: Real,
     /// Whether a shadow ray checks that the point light is visible (session 2).
     pub shadows: bool,
@@ -28,21 +37,9 @@ pub struct Settings {
     /// Past the bounce limit, the probability that a path goes on (Russian roulette,
     /// session 4); `None`: paths stop at the limit.
     pub russian_roulette: Option<Real>,
+    /// How a pixel's samples are placed and how many it takes (session 3, beyond
+    /// the course).
+    #[cfg(feature = "s3")]
+    pub sampling: Sampling,
 }
 // ANCHOR_END: settings
-
-impl Default for Settings {
-    /// One sample, five bounces, seed 0, linear output, and nothing more.
-    fn default() -> Settings {
-        Settings {
-            samples: 1,
-            bounces: 5,
-            seed: 0,
-            gamma: 1.0,
-            shadows: false,
-            indirect: false,
-            light_sampling: false,
-            russian_roulette: None,
-        }
-    }
-}

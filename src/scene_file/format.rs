@@ -98,6 +98,20 @@ pub enum TriangleTestSpec {
     Watertight,
 }
 
+/// `sampler = "independent"`, `"stratified"` or `"sobol"`: how the random numbers
+/// of a pixel's samples are chosen.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "kebab-case")]
+pub enum SamplerSpec {
+    /// Independent numbers: the course's (the default).
+    #[default]
+    Independent,
+    /// Stratified numbers: one sample in each stratum.
+    Stratified,
+    /// Owen-scrambled Sobol points.
+    Sobol,
+}
+
 /// `[render]`: image size and how the render is done.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -136,6 +150,12 @@ pub struct RenderSpec {
     pub triangle_test: Option<TriangleTestSpec>,
     /// Most triangles in a leaf of the `"fast"` hierarchy (default 8).
     pub leaf_size: Option<std::num::NonZeroU16>,
+    /// How the random numbers of a pixel's samples are chosen (session 3; default
+    /// independent).
+    pub sampler: Option<SamplerSpec>,
+    /// Adaptive sampling's target: the relative standard error at which a pixel
+    /// stops taking samples (session 3; absent: every pixel takes `samples`).
+    pub noise: Option<Positive>,
 }
 
 fn one() -> NonZeroU32 {

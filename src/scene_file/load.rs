@@ -5,7 +5,7 @@ use std::num::NonZeroU32;
 use std::path::Path;
 
 use crate::maths::Real;
-use crate::maths::values::Finite;
+use crate::maths::values::{Finite, Positive};
 use crate::scene::Scene;
 use crate::scene_file::consistency::check_consistency;
 use crate::scene_file::format::SceneFile;
@@ -41,13 +41,19 @@ pub struct Overrides {
     pub seed: Option<u64>,
     /// The camera's plunge angle in degrees (the animation's variable).
     pub plunge: Option<Real>,
+    /// Adaptive sampling's target relative standard error (session 3).
+    pub noise: Option<Real>,
 }
 
 impl Overrides {
-    /// Puts the overrides into `file`; an error if the plunge is not a finite angle.
-    pub fn apply(&self, file: &mut SceneFile) -> Result<(), String> {
+    /// Puts the overrides into `file`; an error names the key if the plunge is not a
+    /// finite angle or the noise not a positive number.
+    pub fn apply(&self, file: &mut SceneFile) -> Result<(), (&'static str, String)> {
         if let Some(p) = self.plunge {
-            file.camera.plunge = Some(Finite::try_from(p)?);
+            file.camera.plunge = Some(Finite::try_from(p).map_err(|e| ("camera.plunge", e))?);
+        }
+        if let Some(noise) = self.noise {
+            file.render.noise = Some(Positive::try_from(noise).map_err(|e| ("render.noise", e))?);
         }
         let r = &mut file.render;
         r.width = self.width.unwrap_or(r.width);
@@ -78,9 +84,9 @@ pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<S
     let mut file = read_file(source, path)?;
     overrides
         .apply(&mut file)
-        .map_err(|message| SceneError::Inconsistent {
+        .map_err(|(key, message)| SceneError::Inconsistent {
             path: path.to_owned(),
-            key: "camera.plunge".into(),
+            key: key.into(),
             message,
         })?;
     check_sessions(&file, path)?;

@@ -36,7 +36,12 @@ pub fn scene(file: &SceneFile, _path: &Path) -> Result<Scene, SceneError> {
 }
 // ANCHOR_END: scene
 
-/// The render settings of the `[render]` table.
+/// The render settings of the `[render]` table that session 1 reads; the later
+/// sessions' settings keep their defaults here.
+#[allow(
+    clippy::needless_update,
+    reason = "from session 3 `Settings` has more fields"
+)]
 pub fn settings(file: &SceneFile) -> Settings {
     let r = &file.render;
     Settings {
@@ -48,5 +53,6 @@ pub fn settings(file: &SceneFile) -> Settings {
         indirect: r.indirect,
         light_sampling: r.light_sampling,
         russian_roulette: r.russian_roulette.map(|p| p.0),
+        ..Settings::default()
     }
 }

@@ -1,18 +1,30 @@
-//! What session 3 adds to a scene file: antialiasing.
+//! What session 3 adds to a scene file: antialiasing, and beyond the course the
+//! sampler and adaptive sampling.
 
 use std::path::Path;
 
 use crate::camera::PixelFilter;
+use crate::maths::Sampler;
 use crate::scene::Scene;
-use crate::scene_file::format::SceneFile;
+use crate::scene::sampling::Sampling;
+use crate::scene_file::format::{SamplerSpec, SceneFile};
 use crate::scene_file::{SceneError, session1};
 
 /// The scene of session 1 with what session 3 reads in `file`: the Gaussian jitter of
-/// camera rays (`camera.antialiasing`, its standard deviation in pixels).
+/// camera rays (`camera.antialiasing`, its standard deviation in pixels), the
+/// sampler (`render.sampler`) and adaptive sampling's target (`render.noise`).
 pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
     let mut scene = session1::scene(file, path)?;
     if let Some(sigma) = file.camera.antialiasing {
         scene.camera.filter = PixelFilter::Gaussian { sigma: sigma.0 };
     }
+    scene.settings.sampling = Sampling {
+        sampler: match file.render.sampler.unwrap_or_default() {
+            SamplerSpec::Independent => Sampler::Independent,
+            SamplerSpec::Stratified => Sampler::Stratified,
+            SamplerSpec::Sobol => Sampler::Sobol,
+        },
+        noise: file.render.noise.map(|n| n.0),
+    };
     Ok(scene)
 }

@@ -77,6 +77,18 @@ const KEYS: &[SessionKey] = &[
         "antialiasing",
     ),
     (
+        |f| f.render.sampler.is_some(),
+        "render.sampler",
+        3,
+        "a choice of sampler",
+    ),
+    (
+        |f| f.render.noise.is_some(),
+        "render.noise",
+        3,
+        "adaptive sampling",
+    ),
+    (
         |f| f.render.light_sampling,
         "render.light_sampling",
         4,

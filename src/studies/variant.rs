@@ -138,6 +138,24 @@ const COMPARISONS: &[(&str, &[&str], &str)] = &[
         "",
     ),
     (
+        "sampler",
+        &[
+            "independent:render.sampler=independent",
+            "stratified:render.sampler=stratified",
+            "sobol:render.sampler=sobol",
+        ],
+        "",
+    ),
+    (
+        "adaptive",
+        &[
+            "independent:render.sampler=independent",
+            "adaptive 0.05:render.noise=0.05",
+            "sobol + adaptive 0.05:render.sampler=sobol,render.noise=0.05",
+        ],
+        "",
+    ),
+    (
         "bounces",
         &[
             "1 bounce:render.bounces=1",
