@@ -26,7 +26,3 @@ pub fn to_single(x: Real) -> f32 {
 pub fn to_double(x: Real) -> f64 {
     x
 }
-
-/// Four [`Real`] numbers worked on by one instruction (SIMD), where the processor
-/// has one: the lanes of [`crate::scene::sphere_lanes`].
-pub type RealLanes = wide::f64x4;

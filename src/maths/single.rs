@@ -27,7 +27,3 @@ pub fn to_single(x: Real) -> f32 {
 pub fn to_double(x: Real) -> f64 {
     f64::from(x)
 }
-
-/// Four [`Real`] numbers worked on by one instruction (SIMD), where the processor
-/// has one: the lanes of [`crate::scene::sphere_lanes`].
-pub type RealLanes = wide::f32x4;

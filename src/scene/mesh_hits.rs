@@ -19,4 +19,15 @@ impl Scene {
         best.map(|(hit, k)| self.meshes[k].hit_record(ray, hit, self.spheres.len() + k))
     }
     // ANCHOR_END: nearest_mesh
+
+    /// The distance to the nearest object, sphere or mesh, that `ray` hits and that
+    /// object's index: what [`Scene::intersect`] finds, without the hit record a
+    /// shadow ray has no use for.
+    pub fn nearest(&self, ray: &Ray) -> Option<(Real, usize)> {
+        let nearest = self.nearest_sphere(ray);
+        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
+            return Some((hit.t, hit.object));
+        }
+        nearest
+    }
 }

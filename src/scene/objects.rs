@@ -94,14 +94,10 @@ impl Scene {
 
     /// The distance to the nearest object that `ray` hits and that object's index:
     /// what [`Scene::intersect`] finds, without the hit record a shadow ray has no
-    /// use for.
+    /// use for. Only spheres until session 5 brings meshes.
+    #[cfg(not(feature = "s5"))]
     pub fn nearest(&self, ray: &Ray) -> Option<(Real, usize)> {
-        let nearest = self.nearest_sphere(ray);
-        #[cfg(feature = "s5")]
-        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
-            return Some((hit.t, hit.object));
-        }
-        nearest
+        self.nearest_sphere(ray)
     }
 
     // ANCHOR: nearest_sphere
@@ -122,7 +118,6 @@ impl Scene {
     }
     // ANCHOR_END: nearest_sphere
 
-    // ANCHOR: nearest_sphere_lanes
     /// The distance to the nearest sphere that `ray` hits and that sphere's index,
     /// from session 3 on: the same answer, to the last bit, with the spheres tested
     /// four at a time ([`SphereLanes`], made at the first ray).
@@ -132,5 +127,4 @@ impl Scene {
             .get_or_init(|| SphereLanes::new(&self.spheres))
             .nearest(ray)
     }
-    // ANCHOR_END: nearest_sphere_lanes
 }

@@ -2,7 +2,16 @@
 //! at once.
 
 use crate::geometry::Ray;
-use crate::maths::{Real, RealLanes};
+use crate::maths::Real;
+
+/// Four [`Real`] numbers worked on by one instruction (SIMD) where the processor has
+/// one, by the `wide` crate.
+#[cfg(not(feature = "f32"))]
+type RealLanes = wide::f64x4;
+/// Four [`Real`] numbers worked on by one instruction (SIMD) where the processor has
+/// one, by the `wide` crate.
+#[cfg(feature = "f32")]
+type RealLanes = wide::f32x4;
 
 /// Spheres tested together: the width of a group.
 pub const LANES: usize = 4;
@@ -21,6 +30,7 @@ pub struct Group {
 }
 
 impl Group {
+    // ANCHOR: group_intersect
     /// For each sphere of the group, the smallest `t > 0` at which `ray` meets it,
     /// or infinity: [`Sphere::intersect`](crate::geometry::Sphere::intersect) on four spheres at once, in portable SIMD
     /// (the `wide` crate: two instructions of two numbers on any x86-64). Every lane
@@ -55,6 +65,7 @@ impl Group {
         let hit = !away & discriminant.simd_ge(zero) & mu.simd_ne(zero) & far.simd_gt(zero);
         hit.select(t, RealLanes::splat(Real::INFINITY)).to_array()
     }
+    // ANCHOR_END: group_intersect
 }
 
 /// The nearest of the distances that `intersect` finds in each of `groups` along

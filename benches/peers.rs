@@ -1,0 +1,247 @@
+//! The crate's fast BVH beside obvhs (a pure-Rust compressed wide BVH, the peer a
+//! Rust user would pick) on the same rays, one thread, in one run: camera rays and
+//! diffuse rays (closest hit), shadow rays (any hit) against the ogre.
+//!
+//! The rays are the `.rays` sets of the Embree benchmark when `RAYSETS` names their
+//! folder (`primary.rays`, `diffuse.rays`, `shadow.rays`), so the figures sit beside
+//! Embree's; otherwise sets made here the same way (a camera from the front, right and
+//! above; cosine-weighted bounces from its hits; shadow rays to a sphere light above).
+//! Both libraries must find the same number of hits.
+//!
+//! `cargo bench --bench peers` (or `RAYSETS=/tmp/raysets/ogre cargo bench --bench peers`).
+
+use std::hint::black_box;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use glam::Vec3A;
+use obvhs::BvhBuildParams;
+use obvhs::cwbvh::builder::build_cwbvh_from_tris;
+use obvhs::ray::{Ray as PeerRay, RayHit};
+use obvhs::triangle::Triangle;
+use raycourse::acceleration::FastBvh;
+use raycourse::geometry::Ray;
+use raycourse::maths::frame::Frame;
+use raycourse::maths::sampling::sample_cosine_hemisphere;
+use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, uniform};
+use raycourse::meshes::{Mesh, Placement, read_obj};
+use raycourse::studies::rayset::{RayKind, RaySet};
+
+/// Timed passes per measurement; the median is reported.
+const PASSES: usize = 7;
+
+fn main() {
+    let mut mesh = ogre();
+    mesh.search = std::sync::Arc::new(FastBvh::build(&mesh, 8));
+    let triangles: Vec<Triangle> = mesh
+        .triangles
+        .iter()
+        .map(|t| {
+            let [a, b, c] = t.map(|i| single(mesh.positions[i as usize]));
+            Triangle {
+                v0: a,
+                v1: b,
+                v2: c,
+            }
+        })
+        .collect();
+    let start = Instant::now();
+    let peer = build_cwbvh_from_tris(
+        &triangles,
+        BvhBuildParams::slow_build(),
+        &mut Duration::default(),
+    );
+    println!(
+        "obvhs slow build: {:.2} s; {} triangles",
+        start.elapsed().as_secs_f64(),
+        triangles.len()
+    );
+    let sets = ray_sets(&mesh);
+    println!(
+        "| set (rays) | raycourse fast BVH, Mrays/s | obvhs CWBVH, Mrays/s | ratio | hits (both) |"
+    );
+    println!("|---|---|---|---|---|");
+    for (name, set) in &sets {
+        let mine = measure(|| trace_mine(&mesh, set));
+        let theirs = measure(|| trace_peer(&peer, &triangles, set));
+        let rays = set.rays.len() as f64 / 1e6;
+        assert_eq!(
+            mine.1, theirs.1,
+            "{name}: the two libraries find different hits"
+        );
+        println!(
+            "| {name} ({}) | {:.2} | {:.2} | {:.2}x | {} |",
+            set.rays.len(),
+            rays / mine.0,
+            rays / theirs.0,
+            theirs.0 / mine.0,
+            mine.1
+        );
+    }
+}
+
+/// The median seconds of [`PASSES`] runs of `trace` (after one to warm the caches),
+/// and what it counted.
+fn measure(trace: impl Fn() -> usize) -> (f64, usize) {
+    let count = trace();
+    let mut seconds: Vec<f64> = (0..PASSES)
+        .map(|_| {
+            let start = Instant::now();
+            black_box(trace());
+            start.elapsed().as_secs_f64()
+        })
+        .collect();
+    seconds.sort_by(f64::total_cmp);
+    (seconds[PASSES / 2], count)
+}
+
+/// The rays of `set` that hit (closest hit) or are blocked (any hit), by the crate.
+fn trace_mine(mesh: &Mesh, set: &RaySet) -> usize {
+    set.rays
+        .iter()
+        .zip(&set.t_max)
+        .filter(|(ray, t_max)| match set.kind {
+            RayKind::ClosestHit => mesh.intersect(ray, t_max.next_up()).is_some(),
+            RayKind::Occlusion => mesh.occluded(ray, t_max.next_up()),
+        })
+        .count()
+}
+
+/// The same count by obvhs, in single precision as it works.
+fn trace_peer(peer: &obvhs::cwbvh::CwBvh, triangles: &[Triangle], set: &RaySet) -> usize {
+    let test =
+        |ray: &PeerRay, id: usize| triangles[peer.primitive_indices[id] as usize].intersect(ray);
+    set.rays
+        .iter()
+        .zip(&set.t_max)
+        .filter(|(ray, t_max)| {
+            let ray = PeerRay::new(
+                single(ray.origin),
+                single(ray.direction),
+                0.0,
+                **t_max as f32,
+            );
+            match set.kind {
+                RayKind::ClosestHit => peer.ray_traverse(ray, &mut RayHit::none(), test),
+                RayKind::Occlusion => !peer.ray_traverse_miss(ray, test),
+            }
+        })
+        .count()
+}
+
+fn single(v: Vec3) -> Vec3A {
+    Vec3A::new(v.x as f32, v.y as f32, v.z as f32)
+}
+
+fn ogre() -> Mesh {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/ogre/ogre.obj");
+    let data = read_obj(&path).expect("the ogre asset loads");
+    let placement = Placement {
+        scale: 1.0,
+        rotation: Mat3::IDENTITY,
+        translation: Vec3::ZERO,
+    };
+    Mesh::new(&data, &placement)
+}
+
+/// The three sets, read from `$RAYSETS` or made here.
+fn ray_sets(mesh: &Mesh) -> Vec<(&'static str, RaySet)> {
+    let names = ["primary", "diffuse", "shadow"];
+    if let Some(dir) = std::env::var_os("RAYSETS").map(PathBuf::from) {
+        println!("ray sets of {}", dir.display());
+        return names
+            .map(|n| {
+                (
+                    n,
+                    RaySet::read(&dir.join(format!("{n}.rays"))).expect("a ray set"),
+                )
+            })
+            .into();
+    }
+    println!("ray sets made here (set RAYSETS to use the Embree benchmark's)");
+    let primary = camera_rays(mesh);
+    let hits: Vec<(Vec3, Vec3)> = primary
+        .rays
+        .iter()
+        .filter_map(|ray| {
+            let hit = mesh.intersect(ray, Real::INFINITY)?;
+            let normal = mesh.hit_record(ray, hit, 0).normal;
+            let normal = if normal.dot(ray.direction) > 0.0 {
+                -normal
+            } else {
+                normal
+            };
+            Some((ray.at(hit.at.t) + normal * 1e-4 * diagonal(mesh), normal))
+        })
+        .collect();
+    let (diffuse, shadow) = bounce_and_shadow_rays(mesh, &hits);
+    vec![
+        ("primary", primary),
+        ("diffuse", diffuse),
+        ("shadow", shadow),
+    ]
+}
+
+/// 512 x 512 rays through the pixel centres of a 40-degree camera looking at the
+/// mesh's centre from the front, right and above.
+fn camera_rays(mesh: &Mesh) -> RaySet {
+    let centre = mesh.bounds.centre();
+    let back = Vec3::new(0.5, 0.3, 1.0).normalize();
+    let eye = centre + back * 1.6 * diagonal(mesh);
+    let frame = Frame::new(-back);
+    let half = (20.0 as Real).to_radians().tan();
+    let rays: Vec<Ray> = (0..512 * 512)
+        .map(|i| {
+            let (x, y) = ((i % 512) as Real, (i / 512) as Real);
+            let (u, v) = (
+                (2.0 * (x + 0.5) / 512.0 - 1.0) * half,
+                (1.0 - 2.0 * (y + 0.5) / 512.0) * half,
+            );
+            Ray::new(eye, frame.to_world(Vec3::new(u, v, 1.0)))
+        })
+        .collect();
+    let t_max = vec![Real::INFINITY; rays.len()];
+    RaySet {
+        kind: RayKind::ClosestHit,
+        rays,
+        t_max,
+    }
+}
+
+/// 2^20 cosine-weighted bounces from the camera's hits, and 2^20 shadow rays from
+/// them to points of a sphere light above the mesh.
+fn bounce_and_shadow_rays(mesh: &Mesh, hits: &[(Vec3, Vec3)]) -> (RaySet, RaySet) {
+    let light = mesh.bounds.centre() + Vec3::new(0.0, 1.0, 1.0).normalize() * diagonal(mesh);
+    let radius = 0.125 * diagonal(mesh);
+    let (mut bounces, mut shadows, mut t_max) = (vec![], vec![], vec![]);
+    for i in 0..1u64 << 20 {
+        let (point, normal) = hits[i as usize % hits.len()];
+        let mut rng = pixel_rng(1, i);
+        let local = sample_cosine_hemisphere(uniform(&mut rng), uniform(&mut rng));
+        bounces.push(Ray::new(point, Frame::new(normal).to_world(local)));
+        let z = 1.0 - 2.0 * uniform(&mut rng);
+        let phi = 2.0 * raycourse::maths::PI * uniform(&mut rng);
+        let r = (1.0 - z * z).sqrt();
+        let target = light + radius * Vec3::new(r * phi.cos(), r * phi.sin(), z);
+        shadows.push(Ray::new(point, target - point));
+        t_max.push(point.distance(target));
+    }
+    let all = vec![Real::INFINITY; bounces.len()];
+    (
+        RaySet {
+            kind: RayKind::ClosestHit,
+            rays: bounces,
+            t_max: all,
+        },
+        RaySet {
+            kind: RayKind::Occlusion,
+            rays: shadows,
+            t_max,
+        },
+    )
+}
+
+/// The length of the diagonal of the mesh's bounding box.
+fn diagonal(mesh: &Mesh) -> Real {
+    (mesh.bounds.max - mesh.bounds.min).length()
+}
