@@ -5,14 +5,15 @@
 #   benches/against.sh d14e0f3          # indirect and light-sampling, 192 x 192
 #   benches/against.sh d14e0f3 512      # at the course's size
 #
-# The earlier commit is built in a git worktree with its own release profile; this
-# one with `--profile fastest`. The two binaries take turns, twice per stage, so
-# that a change in the machine's load touches both alike.
+# The earlier commit is built in a git worktree (in $TMPDIR) with its own release
+# profile; this one with `--profile fastest`. The two binaries take turns, twice per
+# stage, so that a change in the machine's load touches both alike; the faster of
+# each pair is reported.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 commit=${1:?usage: benches/against.sh COMMIT [SIZE]}
 size=${2:-192}
-base=target/against/$commit
+base=${TMPDIR:-/tmp}/raycourse-$commit
 if [ ! -x "$base/target/release/raycourse" ]; then
   rm -rf "$base"
   git worktree add --force --detach "$base" "$commit" >/dev/null

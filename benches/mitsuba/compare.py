@@ -18,6 +18,7 @@ displayed: `min(255, L^(1/gamma))` per channel, on a 4 x 4 grid of regions.
 import argparse
 import glob
 import os
+import re
 import subprocess
 import sys
 import time
@@ -146,12 +147,18 @@ def raycourse_image(stage, args):
 
 
 def has_llvm():
+    """Whether Dr.Jit can find a recent LLVM for `llvm_ad_rgb` (the newest installed;
+    LLVM 14 is too old for the kernels of Mitsuba 3.9)."""
     if os.environ.get("DRJIT_LIBLLVM_PATH"):
         return True
-    found = sorted(glob.glob("/usr/lib/llvm-*/lib/libLLVM*.so*"))
-    if found:
-        os.environ["DRJIT_LIBLLVM_PATH"] = found[-1]
-    return bool(found)
+    found = glob.glob("/usr/lib/*/libLLVM*.so*") + glob.glob("/usr/lib/llvm-*/lib/libLLVM*.so*")
+    versions = [(int(m.group(1)), path) for path in found
+                if (m := re.search(r"libLLVM(?:-|\.so\.)(\d+)", path))]
+    if not versions or max(versions)[0] < 15:
+        print("no LLVM 15 or newer: llvm_ad_rgb skipped (Debian: apt-get install libllvm19)")
+        return False
+    os.environ["DRJIT_LIBLLVM_PATH"] = max(versions)[1]
+    return True
 
 
 def main():
@@ -166,7 +173,7 @@ def main():
     import mitsuba as mi
     variants = ["scalar_rgb"] + (["llvm_ad_rgb"] if has_llvm() else [])
     print(f"{args.size} x {args.size}, {args.spp} spp, {args.threads} threads")
-    print("| stage | renderer | seconds | against raycourse | region means: worst, overall |")
+    print("| stage | renderer | seconds | speed against raycourse | region means: worst, overall |")
     print("|---|---|---|---|---|")
     for stage in args.stages:
         scene = tomllib.loads((ROOT / "sessions" / STAGES[stage] / f"{stage}.toml").read_text())

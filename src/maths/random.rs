@@ -76,6 +76,7 @@ impl PixelRng {
         self.dimension = 0;
     }
 
+    // ANCHOR: next_dimension
     /// The hash of the current dimension, and the sample's place among the `block`
     /// samples of its batch, permuted differently for every pixel, dimension and
     /// batch so that dimensions are not correlated.
@@ -92,6 +93,7 @@ impl PixelRng {
             batch * self.block + permute(place, self.block, batch_hash),
         )
     }
+    // ANCHOR_END: next_dimension
 
     /// A number of `[0, 1)` for a one-dimensional decision of a stratified or Sobol
     /// sampler.
@@ -105,6 +107,7 @@ impl PixelRng {
         }
     }
 
+    // ANCHOR: spread_pair
     /// A point of `[0, 1)^2` for a two-dimensional decision of a stratified or Sobol
     /// sampler.
     #[inline(never)]
@@ -127,6 +130,7 @@ impl PixelRng {
             )
         }
     }
+    // ANCHOR_END: spread_pair
 
     /// A number of `[0, 1)` for the current sample and the dimension of `hash`: the
     /// place inside a stratum.

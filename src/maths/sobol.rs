@@ -8,6 +8,7 @@
 //! of a coordinate according to a hash of the digits above it, which keeps that
 //! property and makes every scrambled copy as likely as any other.
 
+// ANCHOR: sobol_pair
 /// The first two Sobol coordinates of point `index`, as 32-bit binary fractions: the
 /// van der Corput sequence (the bits of `index` mirrored) and the second dimension,
 /// whose direction numbers are `v_0 = 1/2`, `v_k = v_(k-1) xor v_(k-1)/2`.
@@ -24,7 +25,9 @@ pub fn sobol_pair(index: u32) -> (u32, u32) {
     }
     (index.reverse_bits(), second)
 }
+// ANCHOR_END: sobol_pair
 
+// ANCHOR: owen_scramble
 /// `value`, a 32-bit binary fraction, Owen-scrambled with `seed`: each binary digit
 /// is flipped according to `seed` and the digits above it, so points that share
 /// their first digits are moved alike and stay spread. With the digits mirrored,
@@ -42,6 +45,7 @@ pub fn owen_scramble(value: u32, seed: u64) -> u32 {
     v ^= v.wrapping_mul(0x53a2_2864);
     v.reverse_bits()
 }
+// ANCHOR_END: owen_scramble
 
 /// The place of `index` in a random-looking permutation of `0..count` chosen by
 /// `seed`: the bits of `index` scrambled as in [`owen_scramble`] (a one-to-one map
