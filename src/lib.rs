@@ -34,7 +34,7 @@
 //! | [`lights`] | the point light, the sphere light | 1, 4 |
 //! | `meshes` | triangle meshes from OBJ files | 5, 6, 7 |
 //! | `acceleration` | the bounding box, the bounding volume hierarchy | 5, 6 |
-//! | [`scene`] | everything a render needs, and the nearest hit | 1, 2, 5 |
+//! | [`scene`] | everything a render needs, and the nearest hit | 1, 2, 3, 5 |
 //! | [`integrator`] | `radiance`: the light arriving along a ray | 1 to 4 |
 //! | [`render`](mod@render) | every pixel, in parallel; the film; PNG files | 1, 3 |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
