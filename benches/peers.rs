@@ -24,7 +24,7 @@ use raycourse::acceleration::FastBvh;
 use raycourse::geometry::Ray;
 use raycourse::maths::frame::Frame;
 use raycourse::maths::sampling::sample_cosine_hemisphere;
-use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, uniform};
+use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, to_single, uniform};
 use raycourse::meshes::{Mesh, Placement, read_obj};
 use raycourse::studies::rayset::{RayKind, RaySet};
 
@@ -120,7 +120,7 @@ fn trace_peer(peer: &obvhs::cwbvh::CwBvh, triangles: &[Triangle], set: &RaySet) 
                 single(ray.origin),
                 single(ray.direction),
                 0.0,
-                **t_max as f32,
+                to_single(**t_max),
             );
             match set.kind {
                 RayKind::ClosestHit => peer.ray_traverse(ray, &mut RayHit::none(), test),
@@ -131,7 +131,7 @@ fn trace_peer(peer: &obvhs::cwbvh::CwBvh, triangles: &[Triangle], set: &RaySet) 
 }
 
 fn single(v: Vec3) -> Vec3A {
-    Vec3A::new(v.x as f32, v.y as f32, v.z as f32)
+    Vec3A::new(to_single(v.x), to_single(v.y), to_single(v.z))
 }
 
 fn ogre() -> Mesh {

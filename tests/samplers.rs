@@ -14,17 +14,17 @@ use statrs::distribution::{ChiSquared, ContinuousCDF};
 
 /// The chi-square p-value of `points` of the unit square against the uniform
 /// density, on a grid of `cells x cells`.
-fn uniform_p_value(points: &[(Real, Real)], cells: usize) -> Real {
+fn uniform_p_value(points: &[(Real, Real)], cells: usize) -> f64 {
     let mut counts = vec![0.0; cells * cells];
     for &(x, y) in points {
         counts[(y * cells as Real) as usize * cells + (x * cells as Real) as usize] += 1.0;
     }
-    let expected = points.len() as Real / counts.len() as Real;
-    let statistic: Real = counts
+    let expected = points.len() as f64 / counts.len() as f64;
+    let statistic: f64 = counts
         .iter()
         .map(|o| (o - expected).powi(2) / expected)
         .sum();
-    ChiSquared::new((counts.len() - 1) as Real)
+    ChiSquared::new((counts.len() - 1) as f64)
         .unwrap()
         .sf(statistic)
 }
