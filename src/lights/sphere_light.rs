@@ -97,10 +97,11 @@ impl SphereLight {
     // ANCHOR_END: sphere_light
 
     /// The cone under which the light is seen from `point`, whose half-angle has
-    /// `sin^2(theta_max) = R^2 / d^2`, or `None` from inside the light.
+    /// `sin^2(theta_max) = R^2 / r^2`, with `r` the distance from `point` to the
+    /// light's centre, or `None` from inside the light.
     pub fn cone(&self, point: Vec3) -> Option<Cone> {
-        let d2 = (self.centre - point).length_squared();
-        let sin2 = self.radius * self.radius / d2;
+        let r2 = (self.centre - point).length_squared();
+        let sin2 = self.radius * self.radius / r2;
         (sin2 < 1.0).then(|| Cone::from_sin2(sin2))
     }
 

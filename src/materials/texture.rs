@@ -31,8 +31,8 @@ pub struct Texture {
 /// The linear value of an 8-bit texel channel. Pictures store
 /// gamma-encoded values `c` (the display shows `c^2.2`), while shading needs the
 /// reflectance itself: `(c / 255)^2.2`.
-pub fn to_linear(v: u8) -> Real {
-    (Real::from(v) / 255.0).powf(2.2)
+pub fn to_linear(c: u8) -> Real {
+    (Real::from(c) / 255.0).powf(2.2)
 }
 // ANCHOR_END: to_linear
 

@@ -154,9 +154,9 @@ impl Mesh {
 
     // ANCHOR: hit_record
     /// The hit record of `hit`, for the mesh numbered `object` in the scene. The
-    /// point is interpolated from the corners, `b_A A + b_B B + b_C C`, whose error
-    /// is at most `delta_7 (|b_A A| + |b_B B| + |b_C C|)` (pbrt-v4). The normal is
-    /// the triangle's own, `(B - A) x (C - A)` normalised, which also decides on which
+    /// point is interpolated from the corners, `b_A P_A + b_B P_B + b_C P_C`, whose error
+    /// is at most `delta_7 (|b_A P_A| + |b_B P_B| + |b_C P_C|)` (pbrt-v4). The normal is
+    /// the triangle's own, `(P_B - P_A) x (P_C - P_A)` normalised, which also decides on which
     /// side a new ray starts.
     pub fn hit_record(&self, ray: &Ray, hit: MeshHit, object: usize) -> Hit {
         let corners = self.corners(hit.triangle);
