@@ -1,6 +1,6 @@
 //! The view's `Cargo.toml`: the crate's own, without session features.
 
-use toml_edit::{DocumentMut, Item, Value};
+use toml_edit::{DocumentMut, Item, Table, Value};
 
 /// The session of a feature name `sN`, if it is one.
 fn session_of(feature: &str) -> Option<u32> {
@@ -15,12 +15,14 @@ fn session_of(feature: &str) -> Option<u32> {
 /// session (`0.1.0-s3`, so that views built side by side stay apart); no features
 /// `s1`..`s7` and no
 /// default features; dependencies that a session brings (`dep:tobj`) plain when
-/// the view has that session, absent otherwise; no workspace; benches and examples
+/// the view has that session, absent otherwise; a workspace of its own (an empty
+/// `[workspace]` table, so that the view builds wherever it is written, even
+/// inside this repository's `target/`); benches and examples
 /// that need a later session left out, the others without their session
 /// requirement. Also returns the names of the targets left out.
 pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), String> {
     let mut doc: DocumentMut = text.parse().map_err(|e| format!("Cargo.toml: {e}"))?;
-    doc.remove("workspace");
+    doc["workspace"] = Item::Table(Table::new());
     let version = doc["package"]["version"]
         .as_str()
         .unwrap_or("0.1.0")
