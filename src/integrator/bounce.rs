@@ -1,5 +1,5 @@
 //! One more bounce of a path, while it may still bounce. Session 4 replaces it by
-//! [Russian roulette](crate::integrator::roulette).
+//! Russian roulette (`integrator/roulette.rs`).
 
 use crate::integrator::Tracer;
 use crate::maths::Colour;

@@ -1,6 +1,6 @@
 //! Indirect lighting: light that reaches a diffuse surface after bouncing off other
 //! surfaces, estimated by Monte Carlo. Session 4 replaces it by a version that
-//! knows about light sampling ([`crate::integrator::light_sampling`]).
+//! knows about light sampling (`integrator/light_sampling.rs`).
 
 use crate::geometry::Hit;
 use crate::integrator::Tracer;

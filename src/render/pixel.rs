@@ -1,5 +1,5 @@
 //! One pixel of sessions 1 and 2: the radiance of the ray through its centre.
-//! Session 3 replaces it by the mean of many samples ([`crate::render::samples`]).
+//! Session 3 replaces it by the mean of many samples (`render/samples.rs`).
 
 use crate::integrator::Tracer;
 use crate::maths::Colour;
