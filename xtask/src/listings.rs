@@ -179,3 +179,19 @@ fn mark_gained(before: &str, after: &str) -> String {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::mark_gained;
+
+    #[test]
+    fn only_the_lines_a_session_added_are_marked() {
+        let before = "fn f() {\n    a();\n    c();\n}\n";
+        let after = "fn f() {\n    a();\n    b();\n\n    c();\n}\n";
+        assert_eq!(
+            mark_gained(before, after),
+            "fn f() {\n    a();\n    b(); // +\n\n    c();\n}\n"
+        );
+        assert_eq!(mark_gained(after, after), after);
+    }
+}

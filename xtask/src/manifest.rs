@@ -103,3 +103,56 @@ pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), 
     }
     Ok((doc.to_string(), dropped))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::view_manifest;
+
+    const MANIFEST: &str = r#"[workspace]
+members = [".", "xtask"]
+
+[package]
+name = "raycourse"
+version = "0.1.0"
+
+[features]
+default = ["s7"]
+s1 = []
+s5 = ["s1", "dep:tobj"]
+s7 = ["s5"]
+f32 = []
+
+[dependencies]
+glam = "0.30"
+tobj = { version = "4", optional = true }
+
+[[bench]]
+name = "bvh"
+required-features = ["s5"]
+
+[[bench]]
+name = "render"
+"#;
+
+    #[test]
+    fn a_view_has_no_session_feature_and_a_workspace_of_its_own() {
+        let (text, dropped) = view_manifest(MANIFEST, 4).unwrap();
+        let doc: toml_edit::DocumentMut = text.parse().unwrap();
+        assert!(doc["workspace"].as_table().unwrap().is_empty());
+        assert_eq!(doc["package"]["version"].as_str(), Some("0.1.0-s4"));
+        let features = doc["features"].as_table().unwrap();
+        assert_eq!(features.iter().map(|(k, _)| k).collect::<Vec<_>>(), ["f32"]);
+        assert!(doc["dependencies"].get("tobj").is_none());
+        assert_eq!(dropped, ["bvh"]);
+    }
+
+    #[test]
+    fn a_dependency_a_held_session_brings_is_plain() {
+        let (text, dropped) = view_manifest(MANIFEST, 5).unwrap();
+        let doc: toml_edit::DocumentMut = text.parse().unwrap();
+        let tobj = doc["dependencies"]["tobj"].as_inline_table().unwrap();
+        assert!(tobj.get("optional").is_none());
+        assert!(dropped.is_empty());
+        assert!(!text.contains("required-features"), "{text}");
+    }
+}

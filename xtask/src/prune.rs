@@ -166,8 +166,9 @@ impl Pruner<'_> {
     }
 
     /// `range` widened to what goes with a removed node: the white space before it
-    /// on its line, a following comma for a list element, and the end of its line
-    /// when nothing else is on it.
+    /// on its line, a following comma for a list element (or the comma before it
+    /// when it ends the list on one line), and the end of its line when nothing
+    /// else is on it.
     fn whole(&self, range: Range<usize>, place: Place) -> Range<usize> {
         let text = &self.source.text;
         let line_start = text[..range.start].rfind('\n').map_or(0, |i| i + 1);
@@ -179,6 +180,12 @@ impl Pruner<'_> {
         let mut end = range.end;
         if place == Place::InList && text[end..].trim_start().starts_with(',') {
             end = self.next_token(end) + 1;
+        } else if place == Place::InList
+            && text[end..].trim_start().starts_with([')', ']', '}'])
+            && !text[..end].ends_with(',')
+            && text[..start].trim_end().ends_with(',')
+        {
+            return text[..start].trim_end().len() - 1..end;
         }
         let rest = &text[end..];
         let line_end = rest.find('\n').map_or(rest.len(), |i| i + 1);
@@ -399,4 +406,95 @@ fn without_rows(text: &str, removed: &[String]) -> String {
         .collect::<Vec<_>>()
         .join("\n")
         + "\n"
+}
+
+#[cfg(test)]
+mod tests {
+    use super::prune;
+
+    /// The text of `text` in the view of `session`.
+    fn view(text: &str, session: u32) -> String {
+        prune(text, session).unwrap().unwrap().text
+    }
+
+    #[test]
+    fn a_later_sessions_statement_goes_and_an_earlier_gate_is_dropped() {
+        let text = "fn f() {\n    let a = 1;\n    #[cfg(feature = \"s2\")]\n    let b = 2;\n    #[cfg(feature = \"s3\")]\n    let c = 3;\n}\n";
+        let at2 = view(text, 2);
+        assert_eq!(at2, "fn f() {\n    let a = 1;\n    let b = 2;\n}\n");
+        assert!(view(text, 1).contains("let a") && !view(text, 1).contains("let b"));
+    }
+
+    #[test]
+    fn fields_variants_arms_and_parameters_go_with_their_commas() {
+        let text = "struct S {\n    a: u8,\n    #[cfg(feature = \"s4\")]\n    b: u8,\n}\n\
+                    enum E {\n    A,\n    #[cfg(feature = \"s4\")]\n    B,\n}\n\
+                    fn g(x: u8, #[cfg(feature = \"s4\")] y: u8) -> u8 {\n    match x {\n        0 => 1,\n        #[cfg(feature = \"s4\")]\n        1 => y,\n        _ => 2,\n    }\n}\n";
+        let at3 = view(text, 3);
+        assert!(!at3.contains("b: u8") && !at3.contains("    B,") && !at3.contains("y"));
+        assert!(at3.contains("fn g(x: u8) -> u8"), "{at3}");
+        assert!(at3.contains("0 => 1,\n        _ => 2,"), "{at3}");
+        assert!(!at3.contains("cfg"));
+        let at4 = view(text, 4);
+        assert!(at4.contains("b: u8") && at4.contains("1 => y") && !at4.contains("cfg"));
+    }
+
+    #[test]
+    fn not_all_and_any_are_evaluated_and_other_predicates_kept() {
+        let text = "#[cfg(not(feature = \"s3\"))]\nfn simple() {}\n\
+                    #[cfg(all(feature = \"s2\", test))]\nfn tested() {}\n\
+                    #[cfg(any(feature = \"s5\", feature = \"f32\"))]\nfn either() {}\n";
+        let at2 = view(text, 2);
+        assert!(at2.contains("fn simple"));
+        assert!(at2.contains("#[cfg(test)]\nfn tested"), "{at2}");
+        assert!(
+            at2.contains("#[cfg(feature = \"f32\")]\nfn either"),
+            "{at2}"
+        );
+        let at5 = view(text, 5);
+        assert!(!at5.contains("fn simple"));
+        assert!(at5.contains("\nfn either"), "{at5}");
+        assert!(!at5.contains("f32"));
+    }
+
+    #[test]
+    fn cfg_attr_on_a_session_becomes_the_attribute_or_nothing() {
+        let text = "#[cfg_attr(feature = \"s3\", derive(Clone))]\nstruct S;\n";
+        assert_eq!(view(text, 3), "#[derive(Clone)]\nstruct S;\n");
+        assert_eq!(view(text, 2), "struct S;\n");
+    }
+
+    #[test]
+    fn a_whole_file_of_a_later_session_is_absent_and_its_module_and_row_go() {
+        assert!(
+            prune("#![cfg(feature = \"s6\")]\nfn f() {}\n", 5)
+                .unwrap()
+                .is_none()
+        );
+        let text = "//! | file | session |\n//! | `early` | 1 |\n//! | `late` | 6 |\n\
+                    mod early;\n#[cfg(feature = \"s6\")]\nmod late;\n";
+        let pruned = prune(text, 5).unwrap().unwrap();
+        assert_eq!(pruned.modules, ["early"]);
+        assert!(!pruned.text.contains("late"), "{}", pruned.text);
+        assert!(pruned.text.contains("`early` | 1"));
+    }
+
+    #[test]
+    fn comments_and_string_blank_lines_are_kept() {
+        let text = "// A comment.\nconst S: &str = \"a\n\n\nb\";\n#[cfg(feature = \"s7\")]\nconst T: u8 = 0;\n";
+        assert_eq!(
+            view(text, 6),
+            "// A comment.\nconst S: &str = \"a\n\n\nb\";\n"
+        );
+    }
+
+    #[test]
+    fn a_later_sessions_stage_row_leaves_the_table() {
+        let text = "const STAGES: [u8; 2] = [\n    stage!(1, \"disk\"),\n    stage!(2, \"shading\"),\n];\n";
+        let at1 = view(text, 1);
+        assert!(
+            at1.contains("stage!(1") && !at1.contains("stage!(2"),
+            "{at1}"
+        );
+    }
 }
