@@ -1,6 +1,6 @@
 //! The view's `Cargo.toml`: the crate's own, without session features.
 
-use toml_edit::{DocumentMut, Item, Table, Value};
+use toml_edit::{DocumentMut, Item, Value};
 
 /// The session of a feature name `sN`, if it is one.
 fn session_of(feature: &str) -> Option<u32> {
@@ -22,7 +22,7 @@ fn session_of(feature: &str) -> Option<u32> {
 /// requirement. Also returns the names of the targets left out.
 pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), String> {
     let mut doc: DocumentMut = text.parse().map_err(|e| format!("Cargo.toml: {e}"))?;
-    doc["workspace"] = Item::Table(Table::new());
+    doc["workspace"] = toml_edit::table();
     let version = doc["package"]["version"]
         .as_str()
         .unwrap_or("0.1.0")

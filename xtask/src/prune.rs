@@ -178,14 +178,16 @@ impl Pruner<'_> {
             range.start
         };
         let mut end = range.end;
-        if place == Place::InList && text[end..].trim_start().starts_with(',') {
-            end = self.next_token(end) + 1;
-        } else if place == Place::InList
-            && text[end..].trim_start().starts_with([')', ']', '}'])
-            && !text[..end].ends_with(',')
-            && text[..start].trim_end().ends_with(',')
-        {
-            return text[..start].trim_end().len() - 1..end;
+        if place == Place::InList {
+            let (before, after) = (text[..start].trim_end(), text[end..].trim_start());
+            if after.starts_with(',') {
+                end = self.next_token(end) + 1;
+            } else if after.starts_with([')', ']', '}'])
+                && before.ends_with(',')
+                && !text[..end].ends_with(',')
+            {
+                return before.len() - 1..end;
+            }
         }
         let rest = &text[end..];
         let line_end = rest.find('\n').map_or(rest.len(), |i| i + 1);
@@ -420,9 +422,12 @@ mod tests {
     #[test]
     fn a_later_sessions_statement_goes_and_an_earlier_gate_is_dropped() {
         let text = "fn f() {\n    let a = 1;\n    #[cfg(feature = \"s2\")]\n    let b = 2;\n    #[cfg(feature = \"s3\")]\n    let c = 3;\n}\n";
-        let at2 = view(text, 2);
-        assert_eq!(at2, "fn f() {\n    let a = 1;\n    let b = 2;\n}\n");
-        assert!(view(text, 1).contains("let a") && !view(text, 1).contains("let b"));
+        assert_eq!(
+            view(text, 2),
+            "fn f() {\n    let a = 1;\n    let b = 2;\n}\n"
+        );
+        let at1 = view(text, 1);
+        assert!(at1.contains("let a") && !at1.contains("let b"));
     }
 
     #[test]
