@@ -7,6 +7,8 @@ use crate::maths::Colour;
 use crate::render::Film;
 use crate::scene::Scene;
 
+#[cfg(feature = "s3")]
+use crate::render::paths_at_once;
 #[cfg(not(feature = "s3"))]
 use crate::render::pixel::pixel;
 #[cfg(feature = "s3")]
@@ -47,14 +49,9 @@ pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Rende
         .zip(samples.par_chunks_mut(width))
         .enumerate()
         .map(|(row, (line, taken))| {
-            let mut tracer = Tracer::new(scene);
-            for (column, (value, taken)) in line.iter_mut().zip(taken).enumerate() {
-                let before = tracer.samples;
-                *value = pixel(&mut tracer, row as u32, column as u32);
-                *taken = (tracer.samples - before) as u32;
-            }
+            let counts = render_row(scene, row as u32, line, taken);
             progress(u64::from(scene.settings.samples));
-            (tracer.rays, tracer.dropped)
+            counts
         })
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1));
     Render {
@@ -69,3 +66,21 @@ pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Rende
     }
 }
 // ANCHOR_END: render
+
+// ANCHOR: render_row
+/// Renders row `row` of `scene` into `line` (each pixel's radiance) and `taken` (the
+/// samples each took); returns the rays traced and the samples dropped.
+pub fn render_row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (u64, u64) {
+    #[cfg(feature = "s3")]
+    if paths_at_once::applies(scene) {
+        return paths_at_once::row(scene, row, line, taken);
+    }
+    let mut tracer = Tracer::new(scene);
+    for (column, (value, taken)) in line.iter_mut().zip(taken).enumerate() {
+        let before = tracer.samples;
+        *value = pixel(&mut tracer, row, column as u32);
+        *taken = (tracer.samples - before) as u32;
+    }
+    (tracer.rays, tracer.dropped)
+}
+// ANCHOR_END: render_row

@@ -1,8 +1,10 @@
 //! One pixel from session 3 on: the mean of many random samples; beyond the course,
 //! as many samples as the pixel needs.
 
+use crate::geometry::Ray;
 use crate::integrator::Tracer;
 use crate::maths::{Colour, Real, pixel_sampler};
+use crate::scene::Settings;
 use crate::scene::sampling::MOST_SAMPLES;
 
 /// The running mean of a pixel's samples. A sample that is not finite (a NaN from a
@@ -69,26 +71,16 @@ pub fn batch(samples: u32) -> u32 {
 // ANCHOR: samples
 /// The radiance of each of the scene's samples of pixel (`row`, `column`), in order
 /// (with adaptive sampling, up to [`MOST_SAMPLES`] times as many: the caller
-/// stops). The pixel's random numbers come from the scene's seed and the pixel's
-/// index alone.
+/// stops).
 pub fn pixel_samples<'t, 's>(
     tracer: &'t mut Tracer<'s>,
     row: u32,
     column: u32,
 ) -> impl Iterator<Item = Colour> + use<'t, 's> {
-    let scene = tracer.scene;
-    let settings = scene.settings;
-    let index = u64::from(row) * u64::from(scene.camera.width) + u64::from(column);
-    let (count, block) = match settings.sampling.noise {
-        None => (settings.samples, settings.samples),
-        Some(_) => (settings.samples * MOST_SAMPLES, batch(settings.samples)),
-    };
-    tracer.rng = pixel_sampler(settings.sampling.sampler, settings.seed, index, block);
+    let count = start_pixel(tracer, row, column);
     (0..count).map(move |i| {
-        tracer.rng.start_sample(i);
-        tracer.samples += 1;
-        let ray = scene.camera.sample_ray(row, column, &mut tracer.rng);
-        tracer.radiance(&ray, settings.bounces)
+        let ray = camera_sample(tracer, row, column, i);
+        tracer.radiance(&ray, tracer.scene.settings.bounces)
     })
 }
 
@@ -97,14 +89,10 @@ pub fn pixel_samples<'t, 's>(
 /// sampling the pixel stops after the first batch whose mean is precise enough.
 pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Colour {
     let settings = tracer.scene.settings;
-    let batch = batch(settings.samples) as usize;
     let mut mean = SampleMean::default();
     for (i, sample) in pixel_samples(tracer, row, column).enumerate() {
         mean.add(sample);
-        if let Some(noise) = settings.sampling.noise
-            && (i + 1).is_multiple_of(batch)
-            && mean.relative_error() <= noise
-        {
+        if precise_enough(&settings, &mean, i as u32 + 1) {
             break;
         }
     }
@@ -112,6 +100,38 @@ pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Colour {
     mean.mean()
 }
 // ANCHOR_END: samples
+
+/// Gives `tracer` the random numbers of pixel (`row`, `column`), which come from the
+/// scene's seed and the pixel's index alone, and returns how many samples the pixel
+/// may take.
+pub fn start_pixel(tracer: &mut Tracer, row: u32, column: u32) -> u32 {
+    let scene = tracer.scene;
+    let settings = scene.settings;
+    let index = u64::from(row) * u64::from(scene.camera.width) + u64::from(column);
+    let (count, block) = match settings.sampling.noise {
+        None => (settings.samples, settings.samples),
+        Some(_) => (settings.samples * MOST_SAMPLES, batch(settings.samples)),
+    };
+    tracer.rng = pixel_sampler(settings.sampling.sampler, settings.seed, index, block);
+    count
+}
+
+/// The camera ray of sample `i` of pixel (`row`, `column`), counted in
+/// [`Tracer::samples`]; the sample's random numbers start here.
+pub fn camera_sample(tracer: &mut Tracer, row: u32, column: u32, i: u32) -> Ray {
+    tracer.rng.start_sample(i);
+    tracer.samples += 1;
+    tracer.scene.camera.sample_ray(row, column, &mut tracer.rng)
+}
+
+/// Whether adaptive sampling stops a pixel whose first `taken` samples have the
+/// mean `mean`: at the end of a batch whose relative error is at most the scene's
+/// `noise`. Never without adaptive sampling.
+pub fn precise_enough(settings: &Settings, mean: &SampleMean, taken: u32) -> bool {
+    settings.sampling.noise.is_some_and(|noise| {
+        taken.is_multiple_of(batch(settings.samples)) && mean.relative_error() <= noise
+    })
+}
 
 #[cfg(test)]
 mod tests {

@@ -28,7 +28,7 @@ pub unsafe fn nearest(groups: &[Group], ray: &Ray) -> Option<(f64, usize)> {
 }
 
 /// For each sphere of `group`, the smallest `t > 0` at which `ray` meets it, or
-/// infinity: the steps of [`Group::intersect`], one AVX instruction each.
+/// infinity: [`meet`] with the ray copied into every lane.
 ///
 /// # Safety
 ///
@@ -36,21 +36,87 @@ pub unsafe fn nearest(groups: &[Group], ray: &Ray) -> Option<(f64, usize)> {
 #[target_feature(enable = "avx")]
 #[inline]
 pub unsafe fn intersect(group: &Group, ray: &Ray) -> [f64; LANES] {
-    let (o, d) = (ray.origin, ray.direction);
+    let splat = |v: crate::maths::Vec3| v.to_array().map(|x| _mm256_set1_pd(x));
     // SAFETY: each array holds four f64, read unaligned.
     let [x, y, z, radius] = [group.x, group.y, group.z, group.radius]
         .map(|lane| unsafe { _mm256_loadu_pd(lane.as_ptr()) });
+    lanes(meet(
+        splat(ray.origin),
+        splat(ray.direction),
+        [x, y, z],
+        radius,
+    ))
+}
+
+/// For each of four `rays`, the distance to the nearest of `groups`' spheres it hits
+/// and that sphere's index: [`SphereLanes::nearest_of_four`], one AVX instruction
+/// per step.
+///
+/// # Safety
+///
+/// The processor must have AVX.
+///
+/// [`SphereLanes::nearest_of_four`]: crate::scene::sphere_lanes::SphereLanes::nearest_of_four
+#[target_feature(enable = "avx")]
+pub unsafe fn nearest_of_four(groups: &[Group], rays: [&Ray; 4]) -> [Option<(f64, usize)>; 4] {
+    let four = |f: fn(&Ray) -> f64| {
+        let values = rays.map(f);
+        // SAFETY: `values` holds four f64, read unaligned.
+        unsafe { _mm256_loadu_pd(values.as_ptr()) }
+    };
+    let origin = [
+        four(|r| r.origin.x),
+        four(|r| r.origin.y),
+        four(|r| r.origin.z),
+    ];
+    let direction = [
+        four(|r| r.direction.x),
+        four(|r| r.direction.y),
+        four(|r| r.direction.z),
+    ];
+    let mut nearest = _mm256_set1_pd(f64::INFINITY);
+    let mut which = _mm256_setzero_pd();
+    for (g, group) in groups.iter().enumerate() {
+        for k in 0..LANES {
+            let centre = [group.x[k], group.y[k], group.z[k]].map(|x| _mm256_set1_pd(x));
+            let t = meet(origin, direction, centre, _mm256_set1_pd(group.radius[k]));
+            let closer = _mm256_cmp_pd::<_CMP_LT_OQ>(t, nearest);
+            nearest = _mm256_blendv_pd(nearest, t, closer);
+            which = _mm256_blendv_pd(which, _mm256_set1_pd((g * LANES + k) as f64), closer);
+        }
+    }
+    let (nearest, which) = (lanes(nearest), lanes(which));
+    std::array::from_fn(|k| (nearest[k] < f64::INFINITY).then(|| (nearest[k], which[k] as usize)))
+}
+
+/// The four numbers of `v`.
+#[target_feature(enable = "avx")]
+#[inline]
+fn lanes(v: __m256d) -> [f64; LANES] {
+    let mut out = [0.0; LANES];
+    // SAFETY: `out` holds four f64, written unaligned.
+    unsafe { _mm256_storeu_pd(out.as_mut_ptr(), v) };
+    out
+}
+
+/// The steps of [`sphere_group::meet`](crate::scene::sphere_group::meet), one AVX
+/// instruction each, in the same order: the same numbers to the last bit.
+#[target_feature(enable = "avx")]
+#[inline]
+fn meet(
+    origin: [__m256d; 3],
+    direction: [__m256d; 3],
+    centre: [__m256d; 3],
+    radius: __m256d,
+) -> __m256d {
+    let [x, y, z] = centre;
     let (add, sub, mul) = (_mm256_add_pd, _mm256_sub_pd, _mm256_mul_pd);
-    let (dx, dy, dz) = (
-        _mm256_set1_pd(d.x),
-        _mm256_set1_pd(d.y),
-        _mm256_set1_pd(d.z),
-    );
+    let [dx, dy, dz] = direction;
     let zero = _mm256_setzero_pd();
     let sign = _mm256_set1_pd(-0.0);
-    let sx = sub(_mm256_set1_pd(o.x), x);
-    let sy = sub(_mm256_set1_pd(o.y), y);
-    let sz = sub(_mm256_set1_pd(o.z), z);
+    let sx = sub(origin[0], x);
+    let sy = sub(origin[1], y);
+    let sz = sub(origin[2], z);
     let dot = |a: [__m256d; 3], b: [__m256d; 3]| {
         add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2]))
     };
@@ -77,9 +143,5 @@ pub unsafe fn intersect(group: &Group, ray: &Ray) -> [f64; LANES] {
         _mm256_and_pd(_mm256_cmp_pd::<_CMP_NEQ_OQ>(mu, zero), positive(far)),
     );
     let hit = _mm256_andnot_pd(away, valid);
-    let t = _mm256_blendv_pd(_mm256_set1_pd(f64::INFINITY), t, hit);
-    let mut out = [0.0; LANES];
-    // SAFETY: `out` holds four f64, written unaligned.
-    unsafe { _mm256_storeu_pd(out.as_mut_ptr(), t) };
-    out
+    _mm256_blendv_pd(_mm256_set1_pd(f64::INFINITY), t, hit)
 }

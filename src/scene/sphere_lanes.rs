@@ -11,7 +11,7 @@
 
 use crate::geometry::{Ray, Sphere};
 use crate::maths::Real;
-use crate::scene::sphere_group::{Group, LANES, nearest_with};
+use crate::scene::sphere_group::{Group, LANES, RealLanes, meet, nearest_with};
 
 /// The centres and radii of a scene's spheres, by coordinate, in groups of
 /// [`LANES`]. The lanes past the last sphere hold NaN, which no test accepts.
@@ -53,6 +53,47 @@ impl SphereLanes {
             return unsafe { crate::scene::sphere_group_avx::nearest(&self.groups, ray) };
         }
         nearest_with(&self.groups, ray, Group::intersect)
+    }
+
+    /// For each of four rays, the distance to the nearest sphere it hits and that
+    /// sphere's index: [`SphereLanes::nearest`] for four paths followed at once, one
+    /// ray per lane, each sphere tested against the four rays in one go ([`meet`];
+    /// with AVX where the processor has it).
+    /// Each lane's steps are those of [`Sphere::intersect`], so each answer is
+    /// [`SphereLanes::nearest`]'s to the last bit; a strict `<` keeps the first
+    /// sphere on a tie.
+    pub fn nearest_of_four(&self, rays: [&Ray; 4]) -> [Option<(Real, usize)>; 4] {
+        #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+        if self.avx {
+            // SAFETY: `avx` is true only where the processor has AVX.
+            return unsafe { crate::scene::sphere_group_avx::nearest_of_four(&self.groups, rays) };
+        }
+        let lanes = |f: fn(&Ray) -> Real| RealLanes::from(rays.map(f));
+        let origin = [
+            lanes(|r| r.origin.x),
+            lanes(|r| r.origin.y),
+            lanes(|r| r.origin.z),
+        ];
+        let direction = [
+            lanes(|r| r.direction.x),
+            lanes(|r| r.direction.y),
+            lanes(|r| r.direction.z),
+        ];
+        let mut nearest = RealLanes::splat(Real::INFINITY);
+        let mut which = RealLanes::ZERO;
+        for (g, group) in self.groups.iter().enumerate() {
+            for k in 0..LANES {
+                let centre = [group.x[k], group.y[k], group.z[k]].map(RealLanes::splat);
+                let t = meet(origin, direction, centre, RealLanes::splat(group.radius[k]));
+                let closer = t.simd_lt(nearest);
+                nearest = closer.select(t, nearest);
+                which = closer.select(RealLanes::splat((g * LANES + k) as Real), which);
+            }
+        }
+        let (nearest, which) = (nearest.to_array(), which.to_array());
+        std::array::from_fn(|k| {
+            (nearest[k] < Real::INFINITY).then(|| (nearest[k], which[k] as usize))
+        })
     }
 }
 
