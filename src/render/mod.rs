@@ -18,6 +18,8 @@ pub mod rows;
 pub mod pixel;
 
 #[cfg(feature = "s3")]
+pub mod direct_at_once;
+#[cfg(feature = "s3")]
 pub mod paths_at_once;
 #[cfg(feature = "s3")]
 pub mod samples;

@@ -1,20 +1,20 @@
-//! Beyond the course: the pixels of a row rendered eight paths at a time, to the
+//! Beyond the course: the pixels of a row rendered four paths at a time, to the
 //! same bytes as [`pixel`](crate::render::samples::pixel).
 //!
 //! Following one path is a chain of steps that each wait for the one before: the
 //! nearest sphere needs the ray, the bounce needs the hit, the next ray needs the
-//! bounce. A processor can start a new operation every cycle but waits many cycles
-//! for a square root or a division, so one path leaves it mostly idle. Eight paths of
-//! eight different pixels have no such chain between them: their steps are taken
-//! side by side, and the nearest-sphere test runs on four rays at once
-//! ([`SphereLanes::nearest_of_four`]).
+//! bounce. Four paths of four different pixels have no such chain between them, so
+//! they are followed side by side, one hit each per step: the nearest-sphere test of
+//! their four rays, then of their four shadow rays, runs as one test on four rays
+//! at once ([`SphereLanes::nearest_of_four`]), each sphere's steps done for the four
+//! rays by one instruction each.
 //!
 //! Every path makes the same computations as the recursive
 //! [`radiance`](crate::integrator::Tracer::radiance), in the same order, with its
-//! pixel's own random numbers: what each diffuse hit adds is kept ([`Level`]) and
+//! pixel's own random numbers: what each diffuse hit adds is kept (a `Level`) and
 //! summed from the end of the path back to its start, as the recursion does when it
 //! returns. So each pixel gets the same value to the last bit, and the image the same
-//! bytes (a test renders every sphere stage both ways). It models only what the
+//! bytes (a test renders the sphere stages both ways). It models only what the
 //! sphere rooms need: diffuse spheres, a point or sphere light, bounce limit and
 //! Russian roulette; any other scene takes the course's recursion.
 //!
@@ -24,15 +24,20 @@ use crate::geometry::Ray;
 use crate::integrator::Tracer;
 use crate::materials::Material;
 use crate::maths::{Colour, Real, uniform};
+use crate::render::direct_at_once::Direct;
 use crate::render::samples::{SampleMean, camera_sample, precise_enough, start_pixel};
 use crate::scene::Scene;
 use crate::scene::sphere_lanes::SphereLanes;
 
-/// How many paths one thread follows at once: two calls of the four-ray test.
-const PATHS: usize = 8;
+/// How many paths one thread follows at once: the rays of one four-ray test.
+const PATHS: usize = 4;
 
-/// Whether [`row`] can render `scene`: spheres only, all of them diffuse.
+/// Whether [`row`] renders `scene`: spheres only, all of them diffuse, unless the
+/// scene asks for the recursion (`[render] recursive`).
 pub fn applies(scene: &Scene) -> bool {
+    if scene.settings.sampling.recursive {
+        return false;
+    }
     #[cfg(feature = "s5")]
     if !scene.meshes.is_empty() {
         return false;
@@ -44,8 +49,9 @@ pub fn applies(scene: &Scene) -> bool {
 }
 
 /// Renders row `row` of `scene` into `line` (each pixel's radiance) and `taken` (its
-/// number of samples), [`PATHS`] paths at a time; returns the rays traced and the
-/// samples dropped as not finite, as [`Tracer`] counts them.
+/// number of samples), `PATHS` (four) pixels at a time, the next pixel starting where one
+/// is done; returns the rays traced and the samples dropped as not finite, as
+/// [`Tracer`] counts them.
 pub fn row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (u64, u64) {
     let spheres = scene.lanes.get_or_init(|| SphereLanes::new(&scene.spheres));
     let mut columns = 0..line.len() as u32;
@@ -56,13 +62,7 @@ pub fn row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (
         .collect();
     let (mut rays, mut dropped) = (0, 0);
     while !paths.is_empty() {
-        for four in paths.chunks_mut(4) {
-            let ray = |k: usize| &four[k.min(four.len() - 1)].ray;
-            let nearest = spheres.nearest_of_four([ray(0), ray(1), ray(2), ray(3)]);
-            for (path, nearest) in four.iter_mut().zip(nearest) {
-                path.step(nearest);
-            }
-        }
+        step(spheres, &mut paths);
         paths.retain_mut(|path| {
             if !path.pixel_done() {
                 return true;
@@ -78,6 +78,30 @@ pub fn row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (
         });
     }
     (rays, dropped)
+}
+
+/// Takes each of `paths` (one to four) one hit further: their rays' nearest hits in
+/// one test, then their shadow rays' in another. Where fewer than four paths are
+/// left, or a path has no shadow ray, a lane repeats another ray and its answer is
+/// not used.
+fn step(spheres: &SphereLanes, paths: &mut [Path]) {
+    let last = paths.len() - 1;
+    let ray = |k: usize| &paths[k.min(last)].ray;
+    let nearest = spheres.nearest_of_four([ray(0), ray(1), ray(2), ray(3)]);
+    for (path, nearest) in paths.iter_mut().zip(nearest) {
+        path.hit(nearest);
+    }
+    let mut shadow = [None; PATHS];
+    if paths.iter().any(|path| path.shadow_ray().is_some()) {
+        let ray = |k: usize| {
+            let path = &paths[k.min(last)];
+            path.shadow_ray().unwrap_or(&path.ray)
+        };
+        shadow = spheres.nearest_of_four([ray(0), ray(1), ray(2), ray(3)]);
+    }
+    for (path, shadow) in paths.iter_mut().zip(shadow) {
+        path.light(shadow);
+    }
 }
 
 /// What a diffuse hit adds to its path's radiance, once the radiance arriving from
@@ -143,6 +167,12 @@ struct Path<'s> {
     bounces: u32,
     /// The hits of the current path so far.
     levels: Vec<Level>,
+    /// The direct light of the last hit, until its shadow ray is traced.
+    direct: Option<Direct>,
+    /// Whether the path ended at its last ray.
+    ended: bool,
+    /// The object whose emission indirect rays do not count ([`skipped`]).
+    skipped: Option<usize>,
 }
 
 impl<'s> Path<'s> {
@@ -161,6 +191,9 @@ impl<'s> Path<'s> {
             ray,
             bounces: scene.settings.bounces,
             levels: Vec::new(),
+            direct: None,
+            ended: false,
+            skipped: skipped(scene),
         }
     }
 
@@ -177,33 +210,49 @@ impl<'s> Path<'s> {
     }
 
     /// Follows the path to the hit `nearest` (the distance and sphere that the ray
-    /// meets first): shades it, and either bounces or ends the sample.
-    fn step(&mut self, nearest: Option<(Real, usize)>) {
+    /// meets first): makes its shadow ray, if any, and its next ray, if it bounces.
+    fn hit(&mut self, nearest: Option<(Real, usize)>) {
         self.tracer.rays += 1;
         let scene = self.tracer.scene;
         let Some((t, object)) = nearest else {
-            return self.end_sample(Colour::ZERO);
+            self.ended = true;
+            return;
         };
         let hit = scene.spheres[object].hit_at(&self.ray, t, object);
         let Material::Diffuse { albedo } = hit.material else {
             unreachable!("paths at once are used only where every sphere is diffuse")
         };
-        let counted = self.levels.is_empty() || skipped(scene) != Some(object);
+        let counted = self.levels.is_empty() || self.skipped != Some(object);
         let hit = hit.facing_the_ray();
-        let direct = self.tracer.direct_light(&hit, albedo);
+        self.direct = Some(Direct::at(&mut self.tracer, &hit, albedo));
         let next = self.next();
         self.levels.push(Level {
             emission: counted.then_some(hit.emission),
-            direct,
+            direct: Colour::ZERO,
             albedo,
             next,
         });
-        match next {
-            Next::Bounced | Next::Survived(_) => {
-                let direction = self.tracer.cosine_direction(&hit);
-                self.ray = hit.spawn(direction);
-            }
-            Next::NoIndirect | Next::Stopped => self.end_sample(Colour::ZERO),
+        self.ended = matches!(next, Next::NoIndirect | Next::Stopped);
+        if !self.ended {
+            let direction = self.tracer.cosine_direction(&hit);
+            self.ray = hit.spawn(direction);
+        }
+    }
+
+    /// The shadow ray of the last hit, if it has one.
+    fn shadow_ray(&self) -> Option<&Ray> {
+        self.direct.as_ref().and_then(Direct::ray)
+    }
+
+    /// Completes the last hit with its direct light, `shadow` being the nearest hit
+    /// of its shadow ray, and ends the sample if the path ended there.
+    fn light(&mut self, shadow: Option<(Real, usize)>) {
+        if let (Some(direct), Some(level)) = (self.direct.take(), self.levels.last_mut()) {
+            level.direct = direct.resolve(shadow);
+        }
+        if self.ended {
+            self.ended = false;
+            self.end_sample(Colour::ZERO);
         }
     }
 

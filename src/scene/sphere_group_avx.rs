@@ -28,7 +28,7 @@ pub unsafe fn nearest(groups: &[Group], ray: &Ray) -> Option<(f64, usize)> {
 }
 
 /// For each sphere of `group`, the smallest `t > 0` at which `ray` meets it, or
-/// infinity: [`meet`] with the ray copied into every lane.
+/// infinity: `meet` with the ray copied into every lane.
 ///
 /// # Safety
 ///
@@ -58,7 +58,7 @@ pub unsafe fn intersect(group: &Group, ray: &Ray) -> [f64; LANES] {
 ///
 /// [`SphereLanes::nearest_of_four`]: crate::scene::sphere_lanes::SphereLanes::nearest_of_four
 #[target_feature(enable = "avx")]
-pub unsafe fn nearest_of_four(groups: &[Group], rays: [&Ray; 4]) -> [Option<(f64, usize)>; 4] {
+pub unsafe fn nearest_of_four(spheres: &[[f64; 5]], rays: [&Ray; 4]) -> [Option<(f64, usize)>; 4] {
     let four = |f: fn(&Ray) -> f64| {
         let values = rays.map(f);
         // SAFETY: `values` holds four f64, read unaligned.
@@ -76,19 +76,22 @@ pub unsafe fn nearest_of_four(groups: &[Group], rays: [&Ray; 4]) -> [Option<(f64
     ];
     let mut nearest = _mm256_set1_pd(f64::INFINITY);
     let mut which = _mm256_setzero_pd();
-    for (g, group) in groups.iter().enumerate() {
-        for k in 0..LANES {
-            let centre = [group.x[k], group.y[k], group.z[k]].map(|x| _mm256_set1_pd(x));
-            let t = meet(origin, direction, centre, _mm256_set1_pd(group.radius[k]));
-            let closer = _mm256_cmp_pd::<_CMP_LT_OQ>(t, nearest);
-            nearest = _mm256_blendv_pd(nearest, t, closer);
-            which = _mm256_blendv_pd(which, _mm256_set1_pd((g * LANES + k) as f64), closer);
-        }
+    for &[x, y, z, radius, index] in spheres {
+        let centre = [x, y, z].map(|c| _mm256_set1_pd(c));
+        let t = meet(origin, direction, centre, _mm256_set1_pd(radius));
+        let closer = _mm256_cmp_pd::<_CMP_LT_OQ>(t, nearest);
+        nearest = _mm256_blendv_pd(nearest, t, closer);
+        which = _mm256_blendv_pd(which, _mm256_set1_pd(index), closer);
     }
     let (nearest, which) = (lanes(nearest), lanes(which));
-    std::array::from_fn(|k| (nearest[k] < f64::INFINITY).then(|| (nearest[k], which[k] as usize)))
+    let mut out = [None; 4];
+    for k in 0..4 {
+        if nearest[k] < f64::INFINITY {
+            out[k] = Some((nearest[k], which[k] as usize));
+        }
+    }
+    out
 }
-
 /// The four numbers of `v`.
 #[target_feature(enable = "avx")]
 #[inline]

@@ -18,6 +18,8 @@ use crate::scene::sphere_group::{Group, LANES, RealLanes, meet, nearest_with};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SphereLanes {
     groups: Vec<Group>,
+    /// Each sphere's centre, radius and index, for the four-ray test.
+    spheres: Vec<[Real; 5]>,
     /// Whether the processor has AVX, whose instructions work on four `f64` at once
     /// (checked once, when the lanes are made).
     avx: bool,
@@ -37,8 +39,12 @@ impl SphereLanes {
                 radius: lane(|s| s.radius),
             }
         });
+        let each = spheres.iter().enumerate();
         SphereLanes {
             groups: groups.collect(),
+            spheres: each
+                .map(|(i, s)| [s.centre.x, s.centre.y, s.centre.z, s.radius, i as Real])
+                .collect(),
             avx: has_avx(),
         }
     }
@@ -66,7 +72,7 @@ impl SphereLanes {
         #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
         if self.avx {
             // SAFETY: `avx` is true only where the processor has AVX.
-            return unsafe { crate::scene::sphere_group_avx::nearest_of_four(&self.groups, rays) };
+            return unsafe { crate::scene::sphere_group_avx::nearest_of_four(&self.spheres, rays) };
         }
         let lanes = |f: fn(&Ray) -> Real| RealLanes::from(rays.map(f));
         let origin = [
@@ -81,14 +87,12 @@ impl SphereLanes {
         ];
         let mut nearest = RealLanes::splat(Real::INFINITY);
         let mut which = RealLanes::ZERO;
-        for (g, group) in self.groups.iter().enumerate() {
-            for k in 0..LANES {
-                let centre = [group.x[k], group.y[k], group.z[k]].map(RealLanes::splat);
-                let t = meet(origin, direction, centre, RealLanes::splat(group.radius[k]));
-                let closer = t.simd_lt(nearest);
-                nearest = closer.select(t, nearest);
-                which = closer.select(RealLanes::splat((g * LANES + k) as Real), which);
-            }
+        for &[x, y, z, radius, index] in &self.spheres {
+            let centre = [x, y, z].map(RealLanes::splat);
+            let t = meet(origin, direction, centre, RealLanes::splat(radius));
+            let closer = t.simd_lt(nearest);
+            nearest = closer.select(t, nearest);
+            which = closer.select(RealLanes::splat(index), which);
         }
         let (nearest, which) = (nearest.to_array(), which.to_array());
         std::array::from_fn(|k| {

@@ -156,6 +156,11 @@ pub struct RenderSpec {
     /// Adaptive sampling's target: the relative standard error at which a pixel
     /// stops taking samples (session 3; absent: every pixel takes `samples`).
     pub noise: Option<Positive>,
+    /// Whether each sample is followed by the course's recursive `radiance`, one
+    /// path at a time, rather than four paths at once (session 3; default false:
+    /// the same image either way, the recursion more slowly).
+    #[serde(default)]
+    pub recursive: bool,
 }
 
 fn one() -> NonZeroU32 {

@@ -12,7 +12,8 @@ use crate::scene_file::{SceneError, session1};
 
 /// The scene of session 1 with what session 3 reads in `file`: the Gaussian jitter of
 /// camera rays (`camera.antialiasing`, its standard deviation in pixels), the
-/// sampler (`render.sampler`) and adaptive sampling's target (`render.noise`).
+/// sampler (`render.sampler`), adaptive sampling's target (`render.noise`) and the
+/// choice of the recursion (`render.recursive`).
 pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
     let mut scene = session1::scene(file, path)?;
     if let Some(sigma) = file.camera.antialiasing {
@@ -25,6 +26,7 @@ pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
             SamplerSpec::Sobol => Sampler::Sobol,
         },
         noise: file.render.noise.map(|n| n.0),
+        recursive: file.render.recursive,
     };
     Ok(scene)
 }

@@ -89,6 +89,12 @@ const KEYS: &[SessionKey] = &[
         "adaptive sampling",
     ),
     (
+        |f| f.render.recursive,
+        "render.recursive",
+        3,
+        "a choice of how paths are followed",
+    ),
+    (
         |f| f.render.light_sampling,
         "render.light_sampling",
         4,
