@@ -5,29 +5,39 @@
 
 use std::num::NonZeroU32;
 
+use raycourse::maths::random::Sampler;
 use raycourse::render::paths_at_once;
 use raycourse::{Overrides, Render, Stage, render, stages};
 
 /// Renders `stage` at 30 x 9 pixels (30 is not a multiple of four, so rows end
-/// with fewer than four paths), at most `samples` samples per pixel.
-fn small(stage: &Stage, samples: u32, extra: Overrides) -> (Render, bool) {
+/// with fewer than four paths), at most `samples` samples per pixel, with the
+/// stage's sampler or `sampler`.
+fn small(
+    stage: &Stage,
+    samples: u32,
+    extra: Overrides,
+    sampler: Option<Sampler>,
+) -> (Render, bool) {
     let overrides = Overrides {
         width: NonZeroU32::new(30),
         height: NonZeroU32::new(9),
         samples: NonZeroU32::new(samples),
         ..extra
     };
-    let scene = stage.scene(&overrides).unwrap();
+    let mut scene = stage.scene(&overrides).unwrap();
+    if let Some(sampler) = sampler {
+        scene.settings.sampling.sampler = sampler;
+    }
     (render(&scene), paths_at_once::applies(&scene))
 }
 
-fn same(stage: &Stage, samples: u32, extra: Overrides) -> bool {
-    let (at_once, applies) = small(stage, samples, extra);
+fn same(stage: &Stage, samples: u32, extra: Overrides, sampler: Option<Sampler>) -> bool {
+    let (at_once, applies) = small(stage, samples, extra, sampler);
     let recursive = Overrides {
         recursive: true,
         ..extra
     };
-    let (one_by_one, recursion_applies) = small(stage, samples, recursive);
+    let (one_by_one, recursion_applies) = small(stage, samples, recursive, sampler);
     assert!(
         !recursion_applies,
         "{}: recursive = true is obeyed",
@@ -60,7 +70,7 @@ fn same(stage: &Stage, samples: u32, extra: Overrides) -> bool {
 #[test]
 fn every_sphere_stage_gives_the_recursions_radiance_to_the_last_bit() {
     let compared: Vec<&str> = stages()
-        .filter(|stage| same(stage, 8, Overrides::default()))
+        .filter(|stage| same(stage, 8, Overrides::default(), None))
         .map(|stage| stage.name)
         .collect();
     // Sessions 1 to 3's diffuse stages; session 4 adds four more (not the Fresnel
@@ -78,12 +88,27 @@ fn adaptive_sampling_stops_each_pixel_at_the_same_sample() {
         ..Overrides::default()
     };
     let stage = stages().find(|s| s.name == "antialiasing").unwrap();
-    assert!(same(stage, 16, adaptive));
-    let (render, _) = small(stage, 16, adaptive);
+    assert!(same(stage, 16, adaptive, None));
+    let (render, _) = small(stage, 16, adaptive, None);
     let fewest = render.samples.iter().min().unwrap();
     let most = render.samples.iter().max().unwrap();
     assert!(
         fewest < most,
         "pixels stop at different counts: {fewest} to {most}"
     );
+}
+
+#[test]
+fn stratified_and_sobol_numbers_are_drawn_in_the_recursions_order() {
+    for name in ["antialiasing", "light-sampling", "depth-of-field"] {
+        let Some(stage) = stages().find(|s| s.name == name) else {
+            continue;
+        };
+        for sampler in [Sampler::Stratified, Sampler::Sobol] {
+            assert!(
+                same(stage, 8, Overrides::default(), Some(sampler)),
+                "{name}"
+            );
+        }
+    }
 }

@@ -80,6 +80,7 @@ pub fn row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (
     (rays, dropped)
 }
 
+// ANCHOR: step
 /// Takes each of `paths` (one to four) one hit further: their rays' nearest hits in
 /// one test, then their shadow rays' in another. Where fewer than four paths are
 /// left, or a path has no shadow ray, a lane repeats another ray and its answer is
@@ -103,6 +104,7 @@ fn step(spheres: &SphereLanes, paths: &mut [Path]) {
         path.light(shadow);
     }
 }
+// ANCHOR_END: step
 
 /// What a diffuse hit adds to its path's radiance, once the radiance arriving from
 /// the rest of the path, `rest`, is known.
@@ -134,6 +136,7 @@ enum Next {
 }
 
 impl Level {
+    // ANCHOR: level_radiance
     /// The radiance leaving this hit, given the radiance `rest` that its bounce
     /// brings back: the sums and products of the recursion, in its order.
     fn radiance(&self, rest: Colour) -> Colour {
@@ -148,6 +151,7 @@ impl Level {
             None => reflected,
         }
     }
+    // ANCHOR_END: level_radiance
 }
 
 /// One pixel's samples, followed one path at a time, one hit per [`Path::step`].
