@@ -6,8 +6,9 @@
 //! first half makes the ray and the light it lets through ([`Direct`]); the second
 //! ([`Direct::resolve`]) takes the nearest hit that the four-ray test found for it.
 //! The two halves make the same computations as `direct_light`, in the same order:
-//! the same light to the last bit. Only the point light's shadow rays are split so;
-//! a sphere light (session 4) is sampled whole by the course's own `sphere_light`.
+//! the same light to the last bit. A point light's shadow ray asks whether anything
+//! is closer than the light; a sphere light's sample (session 4: `sample_light`)
+//! asks whether the first object it meets is the light.
 //!
 //! [`Tracer::direct_light`]: crate::integrator::Tracer::direct_light
 
@@ -31,6 +32,16 @@ pub enum Direct {
         /// The light that arrives if nothing is in the way.
         lit: Colour,
     },
+    /// `lit` if the first object that `ray` meets is `object`, a sphere light (the
+    /// light sample of `sample_light`, session 4).
+    Seen {
+        /// The ray, from the hit towards a point of the light.
+        ray: Ray,
+        /// The light's sphere.
+        object: usize,
+        /// The light that arrives if the ray meets the light first.
+        lit: Colour,
+    },
 }
 
 impl Direct {
@@ -42,7 +53,7 @@ impl Direct {
             None => Direct::Known(Colour::ZERO),
             Some(Light::Point(light)) => point(tracer, &light, hit, albedo),
             #[cfg(feature = "s4")]
-            Some(Light::Sphere(light)) => Direct::Known(tracer.sphere_light(&light, hit, albedo)),
+            Some(Light::Sphere(light)) => sphere(tracer, &light, hit, albedo),
         }
     }
 
@@ -50,7 +61,7 @@ impl Direct {
     pub fn ray(&self) -> Option<&Ray> {
         match self {
             Direct::Known(_) => None,
-            Direct::Unblocked { ray, .. } => Some(ray),
+            Direct::Unblocked { ray, .. } | Direct::Seen { ray, .. } => Some(ray),
         }
     }
 
@@ -62,6 +73,10 @@ impl Direct {
             Direct::Unblocked { distance, lit, .. } => match nearest {
                 Some((t, _)) if t < distance => Colour::ZERO,
                 _ => lit,
+            },
+            Direct::Seen { object, lit, .. } => match nearest {
+                Some((_, seen)) if seen == object => lit,
+                _ => Colour::ZERO,
             },
         }
     }
@@ -76,4 +91,33 @@ fn point(tracer: &mut Tracer, light: &PointLight, hit: &Hit, albedo: Colour) -> 
     let (ray, distance) = hit.spawn_towards(light.position);
     tracer.rays += 1;
     Direct::Unblocked { ray, distance, lit }
+}
+
+/// [`Tracer::sphere_light`](crate::integrator::Tracer::sphere_light) and
+/// `sample_light`, first half.
+#[cfg(feature = "s4")]
+fn sphere(
+    tracer: &mut Tracer,
+    light: &crate::lights::SphereLight,
+    hit: &Hit,
+    albedo: Colour,
+) -> Direct {
+    use crate::maths::{PI, uniform_pair};
+    if !tracer.scene.settings.light_sampling {
+        return Direct::Known(Colour::ZERO);
+    }
+    let (u1, u2) = uniform_pair(&mut tracer.rng);
+    let Some((direction, pdf)) = light.sample(hit.point, u1, u2) else {
+        return Direct::Known(Colour::ZERO);
+    };
+    let cos = direction.dot(hit.normal);
+    if cos <= 0.0 {
+        return Direct::Known(Colour::ZERO);
+    }
+    tracer.rays += 1;
+    Direct::Seen {
+        ray: hit.spawn(direction),
+        object: light.object,
+        lit: light.emission * albedo / PI * cos / pdf,
+    }
 }
