@@ -87,7 +87,7 @@ pub unsafe fn nearest_of_four(spheres: &[[f64; 5]], rays: [&Ray; 4]) -> [Option<
     let mut out = [None; 4];
     for k in 0..4 {
         if nearest[k] < f64::INFINITY {
-            out[k] = Some((nearest[k], which[k] as usize));
+            out[k] = Some((nearest[k], which[k].to_bits() as usize));
         }
     }
     out

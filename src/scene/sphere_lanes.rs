@@ -18,7 +18,8 @@ use crate::scene::sphere_group::{Group, LANES, RealLanes, meet, nearest_with};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SphereLanes {
     groups: Vec<Group>,
-    /// Each sphere's centre, radius and index, for the four-ray test.
+    /// Each sphere's centre, radius and index, for the four-ray test; the index is
+    /// held as the bits of a `Real`, which the lanes copy as they are.
     spheres: Vec<[Real; 5]>,
     /// Whether the processor has AVX, whose instructions work on four `f64` at once
     /// (checked once, when the lanes are made).
@@ -43,7 +44,15 @@ impl SphereLanes {
         SphereLanes {
             groups: groups.collect(),
             spheres: each
-                .map(|(i, s)| [s.centre.x, s.centre.y, s.centre.z, s.radius, i as Real])
+                .map(|(i, s)| {
+                    [
+                        s.centre.x,
+                        s.centre.y,
+                        s.centre.z,
+                        s.radius,
+                        Real::from_bits(i as _),
+                    ]
+                })
                 .collect(),
             avx: has_avx(),
         }
@@ -96,7 +105,7 @@ impl SphereLanes {
         }
         let (nearest, which) = (nearest.to_array(), which.to_array());
         std::array::from_fn(|k| {
-            (nearest[k] < Real::INFINITY).then(|| (nearest[k], which[k] as usize))
+            (nearest[k] < Real::INFINITY).then(|| (nearest[k], which[k].to_bits() as usize))
         })
     }
 }
