@@ -20,7 +20,7 @@
 //!
 //! [`SphereLanes::nearest_of_four`]: crate::scene::sphere_lanes::SphereLanes::nearest_of_four
 
-use crate::geometry::Ray;
+use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
 use crate::materials::Material;
 use crate::maths::{Colour, Real, uniform};
@@ -84,13 +84,25 @@ pub fn row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (
 /// Takes each of `paths` (one to four) one hit further: their rays' nearest hits in
 /// one test, then their shadow rays' in another. Where fewer than four paths are
 /// left, or a path has no shadow ray, a lane repeats another ray and its answer is
-/// not used.
+/// not used. Each part of the work at a hit is done for every path before the next
+/// part, so that the processor can overlap the paths' square roots and divisions.
 fn step(spheres: &SphereLanes, paths: &mut [Path]) {
     let last = paths.len() - 1;
     let ray = |k: usize| &paths[k.min(last)].ray;
     let nearest = spheres.nearest_of_four([ray(0), ray(1), ray(2), ray(3)]);
-    for (path, nearest) in paths.iter_mut().zip(nearest) {
-        path.hit(nearest);
+    let mut hits = [None; PATHS];
+    for ((path, nearest), hit) in paths.iter_mut().zip(nearest).zip(&mut hits) {
+        *hit = path.hit(nearest);
+    }
+    for (path, hit) in paths.iter_mut().zip(&hits) {
+        if let Some((hit, albedo)) = hit {
+            path.direct = Some(Direct::at(&mut path.tracer, hit, *albedo));
+        }
+    }
+    for (path, hit) in paths.iter_mut().zip(&hits) {
+        if let Some((hit, albedo)) = hit {
+            path.go_on(hit, *albedo);
+        }
     }
     let mut shadow = [None; PATHS];
     if paths.iter().any(|path| path.shadow_ray().is_some()) {
@@ -213,22 +225,26 @@ impl<'s> Path<'s> {
             || precise_enough(&self.tracer.scene.settings, &self.mean, self.taken)
     }
 
-    /// Follows the path to the hit `nearest` (the distance and sphere that the ray
-    /// meets first): makes its shadow ray, if any, and its next ray, if it bounces.
-    fn hit(&mut self, nearest: Option<(Real, usize)>) {
+    /// The hit `nearest` (the distance and sphere that the ray meets first), facing
+    /// the ray, and its albedo; `None` where the ray meets nothing, which ends the
+    /// path.
+    fn hit(&mut self, nearest: Option<(Real, usize)>) -> Option<(Hit, Colour)> {
         self.tracer.rays += 1;
-        let scene = self.tracer.scene;
         let Some((t, object)) = nearest else {
             self.ended = true;
-            return;
+            return None;
         };
-        let hit = scene.spheres[object].hit_at(&self.ray, t, object);
+        let hit = self.tracer.scene.spheres[object].hit_at(&self.ray, t, object);
         let Material::Diffuse { albedo } = hit.material else {
             unreachable!("paths at once are used only where every sphere is diffuse")
         };
-        let counted = self.levels.is_empty() || self.skipped != Some(object);
-        let hit = hit.facing_the_ray();
-        self.direct = Some(Direct::at(&mut self.tracer, &hit, albedo));
+        Some((hit.facing_the_ray(), albedo))
+    }
+
+    /// Goes on from `hit`, of a surface of `albedo`, once its direct light is
+    /// drawn: keeps what the hit adds and makes the next ray, if the path bounces.
+    fn go_on(&mut self, hit: &Hit, albedo: Colour) {
+        let counted = self.levels.is_empty() || self.skipped != Some(hit.object);
         let next = self.next();
         self.levels.push(Level {
             emission: counted.then_some(hit.emission),
@@ -238,7 +254,7 @@ impl<'s> Path<'s> {
         });
         self.ended = matches!(next, Next::NoIndirect | Next::Stopped);
         if !self.ended {
-            let direction = self.tracer.cosine_direction(&hit);
+            let direction = self.tracer.cosine_direction(hit);
             self.ray = hit.spawn(direction);
         }
     }
