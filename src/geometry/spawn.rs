@@ -57,12 +57,13 @@ impl Hit {
 /// `p` moved to the next float in the direction of `o`'s sign: `p.next_up()` where
 /// `o > 0`, `p.next_down()` where `o < 0`, `p` itself where `o` is zero (or NaN).
 ///
-/// The same numbers as those three cases, found without guessing: the signs of a hit
-/// point's coordinates and of its normal's are as good as random from one ray to the
-/// next, so a choice among them would often send the processor down the wrong branch,
-/// which costs it more than the whole step. A finite float other than zero is one
-/// integer step away from its neighbours: its bits plus one lie further from zero,
-/// minus one nearer. Only zero, infinities and NaN take the three cases.
+/// It gives the same numbers as those three cases without choosing among them by
+/// the signs, which are as good as random from one ray to the next: a processor
+/// guesses the way of each branch before it knows it, and a wrong guess costs more
+/// than the whole step. A finite float other than zero is one integer step away from
+/// its neighbours: its bits plus one lie further from zero, minus one nearer. Only a
+/// `p` that is zero, infinite or NaN, or an `o` that is zero or NaN, takes the three
+/// cases.
 pub fn one_ulp_towards(p: Real, o: Real) -> Real {
     let rare = p == 0.0 || !p.is_finite() || o == 0.0 || o.is_nan();
     if rare {
