@@ -310,25 +310,33 @@ impl<'s> Path<'s> {
 }
 
 /// The object whose emission indirect rays do not count because light sampling
-/// counts it (session 4), if any.
-fn skipped(scene: &Scene) -> Option<usize> {
-    #[cfg(feature = "s4")]
-    if let Some(crate::lights::Light::Sphere(light)) = scene.light
-        && scene.settings.light_sampling
-    {
-        return Some(light.object);
-    }
-    let _ = scene;
+/// counts it: none before session 4.
+#[cfg(not(feature = "s4"))]
+fn skipped(_: &Scene) -> Option<usize> {
     None
 }
 
-/// The survival probability of Russian roulette past the bounce limit (session 4).
-fn roulette(settings: &crate::scene::Settings) -> Option<Real> {
-    #[cfg(feature = "s4")]
-    return settings.russian_roulette;
-    #[cfg(not(feature = "s4"))]
-    {
-        let _ = settings;
-        None
+/// The object whose emission indirect rays do not count because light sampling
+/// counts it, if any.
+#[cfg(feature = "s4")]
+fn skipped(scene: &Scene) -> Option<usize> {
+    match scene.light {
+        Some(crate::lights::Light::Sphere(light)) if scene.settings.light_sampling => {
+            Some(light.object)
+        }
+        _ => None,
     }
+}
+
+/// The survival probability of Russian roulette past the bounce limit: none before
+/// session 4.
+#[cfg(not(feature = "s4"))]
+fn roulette(_: &crate::scene::Settings) -> Option<Real> {
+    None
+}
+
+/// The survival probability of Russian roulette past the bounce limit.
+#[cfg(feature = "s4")]
+fn roulette(settings: &crate::scene::Settings) -> Option<Real> {
+    settings.russian_roulette
 }
