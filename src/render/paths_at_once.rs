@@ -166,7 +166,7 @@ impl Level {
     // ANCHOR_END: level_radiance
 }
 
-/// One pixel's samples, followed one path at a time, one hit per [`Path::step`].
+/// One pixel's samples, followed one path at a time, one hit per [`step`].
 struct Path<'s> {
     /// The pixel's random numbers and the counts of rays and samples.
     tracer: Tracer<'s>,
@@ -279,7 +279,7 @@ impl<'s> Path<'s> {
     /// How the path goes on after a hit: the random number of the roulette is
     /// drawn where the recursion draws it.
     fn next(&mut self) -> Next {
-        let settings = self.tracer.scene.settings;
+        let settings = &self.tracer.scene.settings;
         if !settings.indirect {
             return Next::NoIndirect;
         }
@@ -287,7 +287,7 @@ impl<'s> Path<'s> {
             self.bounces = left;
             return Next::Bounced;
         }
-        match roulette(&settings) {
+        match roulette(settings) {
             Some(survival) if uniform(&mut self.tracer.rng) < survival => Next::Survived(survival),
             _ => Next::Stopped,
         }

@@ -92,6 +92,7 @@ pub unsafe fn nearest_of_four(spheres: &[[f64; 5]], rays: [&Ray; 4]) -> [Option<
     }
     out
 }
+
 /// The four numbers of `v`.
 #[target_feature(enable = "avx")]
 #[inline]
