@@ -20,7 +20,7 @@ use obvhs::BvhBuildParams;
 use obvhs::cwbvh::builder::build_cwbvh_from_tris;
 use obvhs::ray::{Ray as PeerRay, RayHit};
 use obvhs::triangle::Triangle;
-use raycourse::acceleration::FastBvh;
+use raycourse::fast::FastBvh;
 use raycourse::geometry::Ray;
 use raycourse::maths::frame::Frame;
 use raycourse::maths::sampling::sample_cosine_hemisphere;

@@ -77,6 +77,9 @@ pub mod integrator;
 
 pub mod render;
 
+#[cfg(feature = "s3")]
+pub mod fast;
+
 pub mod scene_file;
 
 #[cfg(feature = "s3")]

@@ -126,7 +126,7 @@ fn searches_agree(obj: &str, count: u64) {
         let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "SAH BVH differs from brute force");
         for leaf in [1, 4, 8, 16] {
-            mesh.search = Arc::new(raycourse::acceleration::FastBvh::build(&mesh, leaf));
+            mesh.search = Arc::new(raycourse::fast::FastBvh::build(&mesh, leaf));
             let fast = hits(&mesh, &rays);
             let differing = fast.iter().zip(&brute).filter(|(a, b)| a != b).count();
             assert_eq!(
@@ -170,7 +170,7 @@ fn the_fast_bvh_agrees_with_the_course_triangle_test() {
         brute.iter().flatten().count() > 2_500,
         "the test is not vacuous"
     );
-    mesh.search = Arc::new(raycourse::acceleration::FastBvh::build(&mesh, 8));
+    mesh.search = Arc::new(raycourse::fast::FastBvh::build(&mesh, 8));
     assert!(
         hits(&mesh, &rays) == brute,
         "fast BVH differs from brute force"

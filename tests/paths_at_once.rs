@@ -5,8 +5,8 @@
 
 use std::num::NonZeroU32;
 
+use raycourse::fast::paths_at_once;
 use raycourse::maths::random::Sampler;
-use raycourse::render::paths_at_once;
 use raycourse::{Overrides, Render, Stage, render, stages};
 
 /// Renders `stage` at 30 x 9 pixels (30 is not a multiple of four, so rows end

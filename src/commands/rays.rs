@@ -7,7 +7,8 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use clap::{ArgMatches, FromArgMatches, Parser, ValueEnum};
-use raycourse::acceleration::{Bvh, FastBvh};
+use raycourse::acceleration::Bvh;
+use raycourse::fast::FastBvh;
 use raycourse::maths::{Mat3, Vec3};
 use raycourse::meshes::{Mesh, Placement, Search, read_obj};
 use raycourse::studies::rayset::{RayKind, RaySet, Timing, time_set};

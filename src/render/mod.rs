@@ -6,7 +6,6 @@
 //! | [`rows`] | 1 | the render loop: rows shared among threads |
 //! | `pixel` | 1, 2 | one pixel: the radiance of the ray through its centre |
 //! | [`samples`] | 3 | one pixel: the mean of many random samples |
-//! | [`paths_at_once`] | 3 | beyond the course: a row's pixels eight paths at a time, same bytes |
 //! | [`film`] | 1 | linear radiance per pixel, and its 8-bit display values |
 //! | [`png`] | 1 | PNG files with fixed settings, written atomically |
 
@@ -17,10 +16,6 @@ pub mod rows;
 #[cfg(not(feature = "s3"))]
 pub mod pixel;
 
-#[cfg(feature = "s3")]
-pub mod direct_at_once;
-#[cfg(feature = "s3")]
-pub mod paths_at_once;
 #[cfg(feature = "s3")]
 pub mod samples;
 

@@ -8,7 +8,7 @@ use crate::render::Film;
 use crate::scene::Scene;
 
 #[cfg(feature = "s3")]
-use crate::render::paths_at_once;
+use crate::fast::paths_at_once;
 #[cfg(not(feature = "s3"))]
 use crate::render::pixel::pixel;
 #[cfg(feature = "s3")]

@@ -7,9 +7,6 @@
 //! | [`settings`] | 1 | how a scene is rendered: samples, bounces, gamma, ... |
 //! | [`occlusion`] | 2 | whether anything lies on a shadow ray |
 //! | [`sampling`] | 3 | how a pixel's samples are placed, and how many it takes |
-//! | [`sphere_group`] | 3 | four spheres by coordinate, and the ray-sphere test on all four |
-//! | `sphere_group_avx` | 3 | the same test in AVX instructions, on x86-64 |
-//! | [`sphere_lanes`] | 3 | a scene's spheres in groups of four, and the nearest one |
 //! | [`mesh_hits`] | 5 | the nearest hit among the meshes |
 
 pub mod objects;
@@ -20,12 +17,6 @@ pub mod occlusion;
 
 #[cfg(feature = "s3")]
 pub mod sampling;
-#[cfg(feature = "s3")]
-pub mod sphere_group;
-#[cfg(all(feature = "s3", target_arch = "x86_64", not(feature = "f32")))]
-pub mod sphere_group_avx;
-#[cfg(feature = "s3")]
-pub mod sphere_lanes;
 
 #[cfg(feature = "s5")]
 pub mod mesh_hits;

@@ -6,10 +6,10 @@ use crate::lights::Light;
 use crate::maths::Real;
 use crate::scene::Settings;
 
+#[cfg(feature = "s3")]
+use crate::fast::sphere_lanes::SphereLanes;
 #[cfg(feature = "s5")]
 use crate::meshes::Mesh;
-#[cfg(feature = "s3")]
-use crate::scene::sphere_lanes::SphereLanes;
 
 // ANCHOR: scene
 /// A scene ready to render. Later sessions add fields (the meshes of session 5);

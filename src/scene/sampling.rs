@@ -16,7 +16,7 @@ pub struct Sampling {
     /// Whether every sample is followed by the course's recursive
     /// [`radiance`](crate::integrator::Tracer::radiance), one path at a time;
     /// `false`: sphere scenes are followed four paths at a time
-    /// ([`paths_at_once`](crate::render::paths_at_once)), to the same bytes.
+    /// ([`paths_at_once`](crate::fast::paths_at_once)), to the same bytes.
     pub recursive: bool,
 }
 

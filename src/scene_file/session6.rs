@@ -5,7 +5,8 @@ use std::path::Path;
 
 use std::sync::Arc;
 
-use crate::acceleration::{Bvh, FastBvh};
+use crate::acceleration::Bvh;
+use crate::fast::FastBvh;
 use crate::scene::Scene;
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
 use crate::scene_file::{SceneError, session5};

@@ -9,7 +9,7 @@ use arrayvec::ArrayVec;
 use glam::Vec4;
 
 use crate::acceleration::Bvh;
-use crate::acceleration::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
+use crate::fast::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
 use crate::geometry::{Ray, ShearedRay, TriangleTest};
 use crate::maths::{Real, Vec3, to_single};
 use crate::meshes::{Mesh, MeshHit, Search};

@@ -18,16 +18,16 @@
 //! sphere rooms need: diffuse spheres, a point or sphere light, bounce limit and
 //! Russian roulette; any other scene takes the course's recursion.
 //!
-//! [`SphereLanes::nearest_of_four`]: crate::scene::sphere_lanes::SphereLanes::nearest_of_four
+//! [`SphereLanes::nearest_of_four`]: crate::fast::sphere_lanes::SphereLanes::nearest_of_four
 
+use crate::fast::direct_at_once::Direct;
+use crate::fast::sphere_lanes::SphereLanes;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
 use crate::materials::Material;
 use crate::maths::{Colour, Real, uniform};
-use crate::render::direct_at_once::Direct;
 use crate::render::samples::{SampleMean, camera_sample, precise_enough, start_pixel};
 use crate::scene::Scene;
-use crate::scene::sphere_lanes::SphereLanes;
 
 /// How many paths one thread follows at once: the rays of one four-ray test.
 const PATHS: usize = 4;

@@ -3,7 +3,7 @@
 //! version works on two numbers per instruction; this one needs no change to the
 //! build, as the processor is asked at run time ([`SphereLanes`]).
 //!
-//! [`SphereLanes`]: crate::scene::sphere_lanes::SphereLanes
+//! [`SphereLanes`]: crate::fast::sphere_lanes::SphereLanes
 
 use std::arch::x86_64::{
     __m256d, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm256_add_pd, _mm256_and_pd,
@@ -12,8 +12,8 @@ use std::arch::x86_64::{
     _mm256_storeu_pd, _mm256_sub_pd, _mm256_xor_pd,
 };
 
+use crate::fast::sphere_group::{Group, LANES, nearest_with};
 use crate::geometry::Ray;
-use crate::scene::sphere_group::{Group, LANES, nearest_with};
 
 /// The nearest sphere of `groups` that `ray` hits: [`nearest_with`] and
 /// [`intersect`], compiled together with AVX.
@@ -56,7 +56,7 @@ pub unsafe fn intersect(group: &Group, ray: &Ray) -> [f64; LANES] {
 ///
 /// The processor must have AVX.
 ///
-/// [`SphereLanes::nearest_of_four`]: crate::scene::sphere_lanes::SphereLanes::nearest_of_four
+/// [`SphereLanes::nearest_of_four`]: crate::fast::sphere_lanes::SphereLanes::nearest_of_four
 #[target_feature(enable = "avx")]
 pub unsafe fn nearest_of_four(spheres: &[[f64; 5]], rays: [&Ray; 4]) -> [Option<(f64, usize)>; 4] {
     let four = |f: fn(&Ray) -> f64| {
@@ -103,7 +103,7 @@ fn lanes(v: __m256d) -> [f64; LANES] {
     out
 }
 
-/// The steps of [`sphere_group::meet`](crate::scene::sphere_group::meet), one AVX
+/// The steps of [`sphere_group::meet`](crate::fast::sphere_group::meet), one AVX
 /// instruction each, in the same order: the same numbers to the last bit.
 #[target_feature(enable = "avx")]
 #[inline]

@@ -1,5 +1,5 @@
 //! Beyond the course: the direct light of [paths followed at
-//! once](crate::render::paths_at_once), in two halves, so that the shadow rays of
+//! once](crate::fast::paths_at_once), in two halves, so that the shadow rays of
 //! four paths are traced together.
 //!
 //! [`Tracer::direct_light`] traces its shadow ray as soon as it has made it. Here the

@@ -9,9 +9,9 @@
 //! The steps are exactly those of [`Sphere::intersect`], in the same order, so each
 //! distance is the same number to the last bit and the image keeps its bytes.
 
+use crate::fast::sphere_group::{Group, LANES, RealLanes, meet, nearest_with};
 use crate::geometry::{Ray, Sphere};
 use crate::maths::Real;
-use crate::scene::sphere_group::{Group, LANES, RealLanes, meet, nearest_with};
 
 /// The centres and radii of a scene's spheres, by coordinate, in groups of
 /// [`LANES`]. The lanes past the last sphere hold NaN, which no test accepts.
@@ -65,7 +65,7 @@ impl SphereLanes {
         #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
         if self.avx {
             // SAFETY: `avx` is true only where the processor has AVX.
-            return unsafe { crate::scene::sphere_group_avx::nearest(&self.groups, ray) };
+            return unsafe { crate::fast::sphere_group_avx::nearest(&self.groups, ray) };
         }
         nearest_with(&self.groups, ray, Group::intersect)
     }
@@ -81,7 +81,7 @@ impl SphereLanes {
         #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
         if self.avx {
             // SAFETY: `avx` is true only where the processor has AVX.
-            return unsafe { crate::scene::sphere_group_avx::nearest_of_four(&self.spheres, rays) };
+            return unsafe { crate::fast::sphere_group_avx::nearest_of_four(&self.spheres, rays) };
         }
         let lanes = |f: fn(&Ray) -> Real| RealLanes::from(rays.map(f));
         let origin = [
