@@ -37,12 +37,16 @@
 //! | [`scene`] | everything a render needs, and the nearest hit | 1, 2, 3, 5 |
 //! | [`integrator`] | `radiance`: the light arriving along a ray | 1 to 4 |
 //! | [`render`](mod@render) | every pixel, in parallel; the film; PNG files | 1, 3 |
+//! | `samplers` | beyond the course: better-placed samples, adaptive sampling | 3 |
+//! | `fast` | beyond the course: the fast engine, the same bytes in less time | 3, 6 |
+//! | `engines` | beyond the course: which engine renders a scene | 3 |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
 //! | `studies` | error against samples and time, scale sweeps, ray sets | 3, 6 |
 //! | `check` | a student's image against the stage's, and the likely mistake | 7 |
 //!
 //! A program starts with a [`Stage`] (or a scene file, [`load_scene`]), renders its
-//! [`Scene`] with [`render()`] and writes the [`Film`] with [`encode_png`]:
+//! [`Scene`] with [`render()`] (the course's code, or from session 3 the engine the
+//! scene's settings choose) and writes the [`Film`] with [`encode_png`]:
 //!
 //! ```
 //! let stage = raycourse::find_stage(1, "shading").unwrap();
@@ -78,7 +82,13 @@ pub mod integrator;
 pub mod render;
 
 #[cfg(feature = "s3")]
+pub mod samplers;
+
+#[cfg(feature = "s3")]
 pub mod fast;
+
+#[cfg(feature = "s3")]
+pub mod engines;
 
 pub mod scene_file;
 
@@ -88,6 +98,10 @@ pub mod studies;
 #[cfg(feature = "s7")]
 pub mod check;
 
-pub use render::{Film, Render, encode_png, render};
+#[cfg(feature = "s3")]
+pub use engines::{render, render_reporting};
+pub use render::{Film, Render, encode_png};
+#[cfg(not(feature = "s3"))]
+pub use render::{render, render_reporting};
 pub use scene::Scene;
 pub use scene_file::{Overrides, SceneError, Stage, find_stage, load_scene, parse_scene, stages};

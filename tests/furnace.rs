@@ -67,7 +67,7 @@ fn settings(bounces: u32, russian_roulette: Option<Real>) -> Settings {
 /// scenes are grey).
 #[cfg(feature = "s3")]
 fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Vec<Real> {
-    raycourse::render::samples::pixel_samples(tracer, row, column)
+    raycourse::samplers::pixel::pixel_samples(tracer, row, column)
         .map(|c| c.x)
         .collect()
 }
@@ -152,10 +152,10 @@ fn the_bounce_limit_biases_a_grey_enclosure_low() {
 #[cfg(feature = "s4")]
 #[test]
 fn russian_roulette_removes_the_bias_with_every_sampler() {
-    use raycourse::maths::Sampler;
+    use raycourse::scene::beyond::Sampler;
     for sampler in [Sampler::Independent, Sampler::Stratified, Sampler::Sobol] {
         let mut scene = furnace(0.5, 1.0, None, settings(2, Some(0.6)));
-        scene.settings.sampling.sampler = sampler;
+        scene.settings.beyond.sampler = sampler;
         let all: Vec<Real> = samples(&scene).into_iter().flatten().collect();
         let (mean, error) = mean_and_error(&all);
         assert!(

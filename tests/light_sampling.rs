@@ -9,7 +9,7 @@ use std::num::NonZeroU32;
 
 use raycourse::integrator::Tracer;
 use raycourse::maths::Real;
-use raycourse::render::samples::pixel_samples;
+use raycourse::samplers::pixel::pixel_samples;
 use raycourse::{Overrides, Scene, find_stage};
 
 const SIZE: u32 = 64;

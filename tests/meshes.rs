@@ -302,13 +302,13 @@ fn mesh_stages_render_the_same_bytes_whatever_the_search() {
     #[cfg(feature = "s6")]
     {
         assert_eq!(png(6, "bvh"), brute, "BVH");
-        // The fast hierarchy, with the BVH stage's watertight triangles.
+        // The fast engine's hierarchy, with the BVH stage's watertight triangles.
         let stage = find_stage(6, "bvh").unwrap();
-        let text = stage
-            .source
-            .replace("acceleration = \"bvh\"", "acceleration = \"fast\"");
-        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(stage.path);
-        let fast = parse_scene(&text, &path, &overrides).unwrap();
+        let fast = Overrides {
+            fast: true,
+            ..overrides
+        };
+        let fast = stage.scene(&fast).unwrap();
         assert_eq!(fast.meshes[0].search.name(), "fast");
         let bvh = stage.scene(&overrides).unwrap();
         let image =
@@ -370,22 +370,22 @@ fn a_scaled_scene_with_the_fast_hierarchy_renders_like_the_unscaled_one() {
     use std::num::NonZeroU32;
 
     let stage = find_stage(6, "bvh").unwrap();
-    let fast = stage
-        .source
-        .replace("acceleration = \"bvh\"", "acceleration = \"fast\"");
+    let fast = stage.source;
     let overrides = Overrides {
         width: NonZeroU32::new(48),
         height: NonZeroU32::new(48),
         samples: NonZeroU32::new(1),
+        fast: true,
         ..Overrides::default()
     };
     let pixels = |text: &str| {
         let scene = parse_scene(text, &stage.file(), &overrides).unwrap();
+        assert_eq!(scene.meshes[0].search.name(), "fast");
         let png = encode_png(&render(&scene).film, scene.settings.gamma);
         image::load_from_memory(&png).unwrap().to_rgb8().into_raw()
     };
-    let small = pixels(&fast);
-    let large = pixels(&scaled(&fast, 10.0, Vec3::new(3.0, -2.0, 5.0)).unwrap());
+    let small = pixels(fast);
+    let large = pixels(&scaled(fast, 10.0, Vec3::new(3.0, -2.0, 5.0)).unwrap());
     let differing = small
         .chunks_exact(3)
         .zip(large.chunks_exact(3))

@@ -7,8 +7,10 @@
 use std::num::NonZeroU32;
 
 use raycourse::integrator::Tracer;
-use raycourse::maths::{Real, Sampler, pixel_sampler, uniform, uniform_pair};
-use raycourse::render::samples::pixel_samples;
+use raycourse::maths::{Real, uniform, uniform_pair};
+use raycourse::samplers::adaptive::Estimate;
+use raycourse::samplers::pixel::{pixel_samples, sampler_rng, start_sample};
+use raycourse::scene::beyond::Sampler;
 use raycourse::{Overrides, Render, Scene, find_stage, render};
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
@@ -37,9 +39,9 @@ fn pairs_of_many_pixels(
 ) -> Vec<(Real, Real)> {
     let mut points = vec![];
     for pixel in 0..4096 {
-        let mut rng = pixel_sampler(sampler, 9, pixel, 16);
+        let mut rng = sampler_rng(sampler, 9, pixel, 16);
         for sample in 0..16 {
-            rng.start_sample(sample);
+            start_sample(&mut rng, sample);
             for _ in 0..dimension {
                 uniform(&mut rng);
             }
@@ -170,11 +172,11 @@ fn an_adaptive_pixel_stops_when_its_mean_is_precise_and_not_before() {
     let (row, column) = (pixel as u32 / 48, pixel as u32 % 48);
     let mut tracer = Tracer::new(&scene);
     let values: Vec<_> = pixel_samples(&mut tracer, row, column).collect();
-    let mut mean = raycourse::render::samples::SampleMean::default();
+    let mut estimate = Estimate::default();
     for (i, value) in values.iter().enumerate().take(taken[pixel] as usize) {
-        mean.add(*value);
+        estimate.add(*value);
         if (i + 1) % 4 == 0 {
-            let stops = mean.relative_error() <= 0.05;
+            let stops = estimate.relative_error() <= 0.05;
             assert_eq!(
                 stops,
                 i + 1 == taken[pixel] as usize,

@@ -42,11 +42,11 @@ pub struct RenderArgs {
     /// and white for the most (session 3).
     #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
     pub noise_map: Option<PathBuf>,
-    /// Follow every sample by the course's recursive `radiance`, one path at a
-    /// time, rather than four paths at once: the same image, more slowly, but
-    /// showing any change made to the recursion (session 3).
+    /// Render with the fast engine, beyond the course: the same image as the
+    /// course's functions give, in less time; an edit of a course function does not
+    /// show in it (session 3).
     #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
-    pub recursive: bool,
+    pub fast: bool,
     /// Hide the progress bar.
     #[arg(long, short)]
     pub quiet: bool,
@@ -63,7 +63,7 @@ impl RenderArgs {
             seed: self.seed,
             plunge: None,
             noise: self.noise,
-            recursive: self.recursive,
+            fast: self.fast,
         }
     }
 }

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use raycourse::{Render, Scene, encode_png, render::render_reporting};
+use raycourse::{Render, Scene, encode_png, render_reporting};
 
 use crate::commands::failure::Failure;
 use crate::commands::options::{RenderArgs, thread_pool};

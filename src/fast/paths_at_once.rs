@@ -26,18 +26,15 @@ use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
 use crate::materials::Material;
 use crate::maths::{Colour, Real, uniform};
-use crate::render::samples::{SampleMean, camera_sample, precise_enough, start_pixel};
+use crate::samplers::adaptive::{Estimate, precise_enough};
+use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
 
 /// How many paths one thread follows at once: the rays of one four-ray test.
 const PATHS: usize = 4;
 
-/// Whether [`row`] renders `scene`: spheres only, all of them diffuse, unless the
-/// scene asks for the recursion (`[render] recursive`).
+/// Whether [`row`] can render `scene`: spheres only, all of them diffuse.
 pub fn applies(scene: &Scene) -> bool {
-    if scene.settings.sampling.recursive {
-        return false;
-    }
     #[cfg(feature = "s5")]
     if !scene.meshes.is_empty() {
         return false;
@@ -48,12 +45,18 @@ pub fn applies(scene: &Scene) -> bool {
         .all(|sphere| matches!(sphere.material, Material::Diffuse { .. }))
 }
 
-/// Renders row `row` of `scene` into `line` (each pixel's radiance) and `taken` (its
-/// number of samples), `PATHS` (four) pixels at a time, the next pixel starting where one
+/// Renders row `row` of `scene`, whose spheres are `spheres`, into `line` (each
+/// pixel's radiance) and `taken` (its number of samples), `PATHS` (four) pixels at a
+/// time, the next pixel starting where one
 /// is done; returns the rays traced and the samples dropped as not finite, as
 /// [`Tracer`] counts them.
-pub fn row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (u64, u64) {
-    let spheres = scene.lanes.get_or_init(|| SphereLanes::new(&scene.spheres));
+pub fn row(
+    scene: &Scene,
+    spheres: &SphereLanes,
+    row: u32,
+    line: &mut [Colour],
+    taken: &mut [u32],
+) -> (u64, u64) {
     let mut columns = 0..line.len() as u32;
     let mut paths: Vec<Path> = columns
         .by_ref()
@@ -67,10 +70,10 @@ pub fn row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (
             if !path.pixel_done() {
                 return true;
             }
-            line[path.column as usize] = path.mean.mean();
+            line[path.column as usize] = path.estimate.mean.mean();
             taken[path.column as usize] = path.taken;
             rays += path.tracer.rays;
-            dropped += u64::from(path.mean.dropped);
+            dropped += u64::from(path.estimate.mean.dropped);
             columns
                 .next()
                 .map(|column| *path = Path::new(scene, row, column))
@@ -176,8 +179,8 @@ struct Path<'s> {
     /// How many samples the pixel may take, and how many it has taken.
     count: u32,
     taken: u32,
-    /// The mean of its finished samples.
-    mean: SampleMean,
+    /// The mean of its finished samples, and their spread.
+    estimate: Estimate,
     /// The ray to follow next, and the bounces left after its hit.
     ray: Ray,
     bounces: u32,
@@ -203,7 +206,7 @@ impl<'s> Path<'s> {
             column,
             count,
             taken: 0,
-            mean: SampleMean::default(),
+            estimate: Estimate::default(),
             ray,
             bounces: scene.settings.bounces,
             levels: Vec::new(),
@@ -222,7 +225,7 @@ impl<'s> Path<'s> {
     /// Whether the pixel has all its samples.
     fn pixel_done(&self) -> bool {
         self.taken == self.count
-            || precise_enough(&self.tracer.scene.settings, &self.mean, self.taken)
+            || precise_enough(&self.tracer.scene.settings, &self.estimate, self.taken)
     }
 
     /// The hit `nearest` (the distance and sphere that the ray meets first), facing
@@ -301,7 +304,7 @@ impl<'s> Path<'s> {
             .drain(..)
             .rev()
             .fold(rest, |rest, level| level.radiance(rest));
-        self.mean.add(radiance);
+        self.estimate.add(radiance);
         self.taken += 1;
         if !self.pixel_done() {
             self.start_sample();

@@ -5,8 +5,7 @@
 //! | [`numbers`] | 1 | `Real`, `Vec3`, `Colour`: the number types, named once |
 //! | [`double`] | 1 | the types in double precision (`single`: with the `f32` feature) |
 //! | [`values`] | 1 | numbers read from scene files, checked against their rule |
-//! | [`random`] | 3 | the random numbers of a pixel's samples: independent, stratified or Sobol |
-//! | [`sobol`] | 3 | Owen-scrambled Sobol points |
+//! | [`random`] | 3 | the random numbers of a pixel's samples |
 //! | [`sampling`] | 3 | random directions and offsets, each beside its density |
 //! | [`frame`] | 3 | an orthonormal frame around a normal |
 
@@ -24,8 +23,6 @@ pub mod frame;
 pub mod random;
 #[cfg(feature = "s3")]
 pub mod sampling;
-#[cfg(feature = "s3")]
-pub mod sobol;
 
 pub use numbers::*;
 #[cfg(feature = "s3")]

@@ -1,193 +1,73 @@
-//! The random numbers of a pixel's samples, so that images do not depend on the
-//! thread count: independent numbers (the course's), or, beyond the course,
-//! stratified numbers and Sobol points that spread each decision of a path evenly
-//! over the pixel's samples.
+//! The random numbers of a pixel's samples. Each pixel draws from a generator of its
+//! own, seeded from the scene's seed and the pixel's index, so that an image does
+//! not depend on which thread renders which pixel.
 
 use rand::{RngExt, SeedableRng};
 
 use crate::maths::Real;
-use crate::maths::sobol::{mix_bits, owen_scramble, permute, sobol_pair};
 
-/// How the random numbers of a pixel's samples are chosen (`[render] sampler`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Sampler {
-    /// Each number drawn independently of all others: the course's choice.
-    #[default]
-    Independent,
-    /// Each decision's range cut into as many equal strata as the pixel has
-    /// samples, one sample in each, at a random place inside it.
-    Stratified,
-    /// Owen-scrambled Sobol points (see [`crate::maths::sobol`]).
-    Sobol,
+/// The random numbers of one pixel.
+#[derive(Debug)]
+pub enum PixelRng {
+    /// Independent numbers from a generator seeded by the pixel: the course's.
+    Independent(rand_pcg::Pcg64Mcg),
+    /// Numbers that a sampler beyond the course spreads evenly over the pixel's
+    /// samples (`src/samplers/`).
+    Spread(Box<dyn SpreadNumbers>),
 }
 
-/// The random numbers of one pixel. Every sample starts with
-/// [`PixelRng::start_sample`]; each random decision of its path (where in the pixel,
-/// where on the lens, which light direction, which bounce direction, whether the
-/// path goes on) then takes the next dimension, one number or a pair.
-#[derive(Clone, Debug)]
-pub struct PixelRng {
-    /// The independent numbers: the course's sampler draws every number from it.
-    stream: rand_pcg::Pcg64Mcg,
-    /// How the numbers are chosen.
-    sampler: Sampler,
-    /// A hash of the scene's seed and the pixel's index.
-    pixel: u64,
-    /// The samples that are spread evenly together: the pixel's sample count, or the
-    /// batch size of adaptive sampling.
-    block: u32,
-    /// The columns of the stratified sampler's grid of `block` cells.
-    columns: u32,
-    /// The number of the current sample.
-    sample: u32,
-    /// The next dimension of the current sample.
-    dimension: u32,
+/// A sampler beyond the course: numbers for each decision of a path, spread evenly
+/// over the samples of a pixel. Every sample starts with
+/// [`start_sample`](SpreadNumbers::start_sample); each random decision of its path
+/// (where in the pixel, where on the lens, which light direction, which bounce
+/// direction, whether the path goes on) then takes the next dimension, one number or
+/// a pair.
+pub trait SpreadNumbers: std::fmt::Debug + Send {
+    /// Starts sample number `sample` of the pixel at its first dimension.
+    fn start_sample(&mut self, sample: u32);
+    /// A number of `[0, 1)` for a one-dimensional decision.
+    fn number(&mut self) -> Real;
+    /// A point of `[0, 1)^2` for a two-dimensional decision.
+    fn pair(&mut self) -> (Real, Real);
 }
 
 // ANCHOR: pixel_rng
 /// The independent random numbers of pixel number `pixel` (row-major from the
 /// top-left) for the scene seed `seed`. Their stream depends on nothing else, so
-/// whichever thread renders the pixel draws the same numbers. The two numbers are
-/// mixed by SplitMix64 so that neighbouring pixels and seeds get unrelated streams.
+/// whichever thread renders the pixel draws the same numbers.
 pub fn pixel_rng(seed: u64, pixel: u64) -> PixelRng {
-    pixel_sampler(Sampler::Independent, seed, pixel, 1)
+    PixelRng::Independent(rand_pcg::Pcg64Mcg::seed_from_u64(pixel_hash(seed, pixel)))
+}
+
+/// The seed and the pixel's index mixed by SplitMix64, so that neighbouring pixels
+/// and seeds get unrelated streams.
+pub fn pixel_hash(seed: u64, pixel: u64) -> u64 {
+    splitmix64(seed ^ splitmix64(pixel))
 }
 // ANCHOR_END: pixel_rng
 
-/// The random numbers of pixel number `pixel` for the scene seed `seed`, chosen by
-/// `sampler`, spread evenly over each `block` of consecutive samples.
-pub fn pixel_sampler(sampler: Sampler, seed: u64, pixel: u64, block: u32) -> PixelRng {
-    let hash = splitmix64(seed ^ splitmix64(pixel));
-    PixelRng {
-        stream: rand_pcg::Pcg64Mcg::seed_from_u64(hash),
-        sampler,
-        pixel: hash,
-        block: block.max(1),
-        columns: columns(block.max(1)),
-        sample: 0,
-        dimension: 0,
-    }
-}
-
-impl PixelRng {
-    /// Starts sample number `sample` of the pixel at its first dimension.
-    pub fn start_sample(&mut self, sample: u32) {
-        self.sample = sample;
-        self.dimension = 0;
-    }
-
-    // ANCHOR: next_dimension
-    /// The hash of the current dimension, and the sample's place among the `block`
-    /// samples of its batch, permuted differently for every pixel, dimension and
-    /// batch so that dimensions are not correlated.
-    fn next_dimension(&mut self) -> (u64, u32) {
-        let hash = mix_bits(self.pixel ^ u64::from(self.dimension).wrapping_mul(GOLDEN));
-        self.dimension += 1;
-        let (batch, place) = (self.sample / self.block, self.sample % self.block);
-        let batch_hash = match batch {
-            0 => hash,
-            _ => mix_bits(hash ^ u64::from(batch)),
-        };
-        (
-            hash,
-            batch * self.block + permute(place, self.block, batch_hash),
-        )
-    }
-    // ANCHOR_END: next_dimension
-
-    /// A number of `[0, 1)` for a one-dimensional decision of a stratified or Sobol
-    /// sampler.
-    #[inline(never)]
-    fn spread_number(&mut self) -> Real {
-        let (hash, index) = self.next_dimension();
-        if self.sampler == Sampler::Stratified {
-            stratum(index % self.block, self.block, self.jitter(hash))
-        } else {
-            unit(owen_scramble(index.reverse_bits(), hash))
-        }
-    }
-
-    // ANCHOR: spread_pair
-    /// A point of `[0, 1)^2` for a two-dimensional decision of a stratified or Sobol
-    /// sampler.
-    #[inline(never)]
-    fn spread_pair(&mut self) -> (Real, Real) {
-        let (hash, index) = self.next_dimension();
-        if self.sampler == Sampler::Stratified {
-            let (columns, cell) = (self.columns, index % self.block);
-            let x = stratum(cell % columns, columns, self.jitter(hash));
-            let y = stratum(
-                cell / columns,
-                self.block / columns,
-                self.jitter(hash ^ GOLDEN),
-            );
-            (x, y)
-        } else {
-            let (x, y) = sobol_pair(index);
-            (
-                unit(owen_scramble(x, hash)),
-                unit(owen_scramble(y, mix_bits(!hash))),
-            )
-        }
-    }
-    // ANCHOR_END: spread_pair
-
-    /// A number of `[0, 1)` for the current sample and the dimension of `hash`: the
-    /// place inside a stratum.
-    fn jitter(&self, hash: u64) -> Real {
-        unit((mix_bits(hash ^ mix_bits(u64::from(self.sample))) >> 32) as u32)
-    }
-}
-
-/// A number drawn from `[0, 1)`: the next dimension of the current sample.
+// ANCHOR: uniform
+/// A number drawn from `[0, 1)`: with the course's generator, the next number of
+/// the pixel's stream.
 #[inline]
 pub fn uniform(rng: &mut PixelRng) -> Real {
-    if rng.sampler == Sampler::Independent {
-        rng.stream.random::<Real>()
-    } else {
-        rng.spread_number()
+    match rng {
+        PixelRng::Independent(stream) => stream.random::<Real>(),
+        PixelRng::Spread(numbers) => numbers.number(),
     }
 }
 
 /// Two numbers drawn from `[0, 1)` for one two-dimensional decision (a point on the
-/// pixel, the lens or a hemisphere): with the course's sampler, two independent
-/// numbers; with the others, one point spread with the pixel's other samples.
+/// pixel, the lens or a hemisphere): with the course's generator, two independent
+/// numbers.
 #[inline]
 pub fn uniform_pair(rng: &mut PixelRng) -> (Real, Real) {
-    if rng.sampler == Sampler::Independent {
-        (rng.stream.random::<Real>(), rng.stream.random::<Real>())
-    } else {
-        rng.spread_pair()
+    match rng {
+        PixelRng::Independent(stream) => (stream.random::<Real>(), stream.random::<Real>()),
+        PixelRng::Spread(numbers) => numbers.pair(),
     }
 }
-
-/// The point `jitter` of the way through stratum `k` of `count` equal strata of
-/// `[0, 1)`.
-fn stratum(k: u32, count: u32, jitter: Real) -> Real {
-    ((k as Real + jitter) / count as Real).min(ONE_BELOW)
-}
-
-/// The number of columns of a grid of `count` strata: the largest divisor of
-/// `count` not above its square root, so that the cells are as square as possible.
-fn columns(count: u32) -> u32 {
-    let root = (count as f64).sqrt() as u32;
-    (1..=root.max(1))
-        .rev()
-        .find(|c| count.is_multiple_of(*c))
-        .unwrap_or(1)
-}
-
-/// 2^64 divided by the golden ratio: an odd number whose multiples spread over all
-/// 64 bits, to tell dimensions and coordinates apart before hashing.
-const GOLDEN: u64 = 0x9E37_79B9_7F4A_7C15;
-
-/// The largest number below 1.
-const ONE_BELOW: Real = 1.0 - Real::EPSILON / 2.0;
-
-/// A 32-bit binary fraction as a number of `[0, 1)`.
-fn unit(bits: u32) -> Real {
-    (bits as Real * (0.5 as Real).powi(32)).min(ONE_BELOW)
-}
+// ANCHOR_END: uniform
 
 /// SplitMix64's finaliser: a bijection of `u64` that scatters nearby inputs.
 fn splitmix64(x: u64) -> u64 {
@@ -219,81 +99,12 @@ mod tests {
 
     #[test]
     fn uniform_numbers_have_the_right_mean_and_range() {
-        for sampler in [Sampler::Independent, Sampler::Stratified, Sampler::Sobol] {
-            let mut rng = pixel_sampler(sampler, 1, 2, 100);
-            let n = 100_000;
-            let values: Vec<Real> = (0..n)
-                .map(|i| {
-                    rng.start_sample(i);
-                    uniform(&mut rng)
-                })
-                .collect();
-            assert!(values.iter().all(|v| (0.0..1.0).contains(v)));
-            let mean = values.iter().sum::<Real>() / n as Real;
-            // The standard error of the mean is sqrt(1/12 / n) = 0.0009.
-            assert!((mean - 0.5).abs() < 0.004, "{sampler:?}: {mean}");
-        }
-    }
-
-    /// The pairs of dimension `dimension` (after that many other decisions) of the
-    /// first `count` samples of pixel `pixel`.
-    fn pairs(sampler: Sampler, pixel: u64, count: u32, dimension: u32) -> Vec<(Real, Real)> {
-        let mut rng = pixel_sampler(sampler, 3, pixel, count);
-        (0..count)
-            .map(|i| {
-                rng.start_sample(i);
-                for _ in 0..dimension {
-                    uniform_pair(&mut rng);
-                }
-                uniform_pair(&mut rng)
-            })
-            .collect()
-    }
-
-    #[test]
-    fn sobol_points_fill_every_elementary_interval_once() {
-        for k in 0..=8 {
-            let count = 1u32 << k;
-            for (pixel, dimension) in [(0, 0), (5, 1), (77, 3)] {
-                let points = pairs(Sampler::Sobol, pixel, count, dimension);
-                for i in 0..=k {
-                    let (nx, ny) = (1u32 << i, 1u32 << (k - i));
-                    let mut cells = vec![0; count as usize];
-                    for &(x, y) in &points {
-                        let cell = (y * ny as Real) as u32 * nx + (x * nx as Real) as u32;
-                        cells[cell as usize] += 1;
-                    }
-                    assert!(
-                        cells.iter().all(|&c| c == 1),
-                        "{count} points, boxes {nx}x{ny}, pixel {pixel}, dimension {dimension}"
-                    );
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn stratified_pairs_fill_every_cell_of_their_grid_once() {
-        for count in [1, 7, 12, 64, 100] {
-            let columns = columns(count);
-            let rows = count / columns;
-            let mut cells = vec![0; count as usize];
-            for (x, y) in pairs(Sampler::Stratified, 9, count, 2) {
-                cells[((y * rows as Real) as u32 * columns + (x * columns as Real) as u32)
-                    as usize] += 1;
-            }
-            assert!(cells.iter().all(|&c| c == 1), "{count}: {cells:?}");
-        }
-    }
-
-    #[test]
-    fn every_pixel_and_dimension_is_scrambled_differently() {
-        let first = pairs(Sampler::Sobol, 0, 16, 0);
-        assert_ne!(first, pairs(Sampler::Sobol, 1, 16, 0));
-        assert_ne!(first, pairs(Sampler::Sobol, 0, 16, 1));
-        assert_ne!(
-            pairs(Sampler::Stratified, 0, 16, 0),
-            pairs(Sampler::Stratified, 1, 16, 0)
-        );
+        let mut rng = pixel_rng(1, 2);
+        let n = 100_000;
+        let values: Vec<Real> = (0..n).map(|_| uniform(&mut rng)).collect();
+        assert!(values.iter().all(|v| (0.0..1.0).contains(v)));
+        let mean = values.iter().sum::<Real>() / n as Real;
+        // The standard error of the mean is sqrt(1/12 / n) = 0.0009.
+        assert!((mean - 0.5).abs() < 0.004, "{mean}");
     }
 }

@@ -21,4 +21,4 @@ pub mod samples;
 
 pub use film::Film;
 pub use png::{encode_png, write_atomically};
-pub use rows::{Render, render, render_reporting};
+pub use rows::{Render, render, render_reporting, render_rows};

@@ -7,8 +7,6 @@ use crate::maths::Colour;
 use crate::render::Film;
 use crate::scene::Scene;
 
-#[cfg(feature = "s3")]
-use crate::fast::paths_at_once;
 #[cfg(not(feature = "s3"))]
 use crate::render::pixel::pixel;
 #[cfg(feature = "s3")]
@@ -35,11 +33,25 @@ pub fn render(scene: &Scene) -> Render {
 }
 
 // ANCHOR: render
-/// Renders `scene` on the current rayon thread pool, one row per task, calling
-/// `progress` with the number of samples per pixel at each finished row (so that a
-/// bar of `height x samples` fills once). Each pixel depends only on the scene and
-/// its position, so the image is the same whatever the number of threads.
+/// Renders `scene` on the current rayon thread pool, row by row with
+/// [`render_row`], calling `progress` with the number of samples per pixel at each
+/// finished row (so that a bar of `height x samples` fills once).
 pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Render {
+    render_rows(scene, progress, |row, line, taken| {
+        render_row(scene, row, line, taken)
+    })
+}
+
+/// Renders `scene` on the current rayon thread pool, one row per task:
+/// `render_row(row, line, taken)` fills a row's pixels with their radiance (`line`)
+/// and the samples each took (`taken`), and returns the rays it traced and the
+/// samples it dropped. Each pixel depends only on the scene and its position, so the
+/// image is the same whatever the number of threads.
+pub fn render_rows(
+    scene: &Scene,
+    progress: &(dyn Fn(u64) + Sync),
+    render_row: impl Fn(u32, &mut [Colour], &mut [u32]) -> (u64, u64) + Sync,
+) -> Render {
     let camera = scene.camera;
     let width = camera.width as usize;
     let mut pixels = vec![Colour::ZERO; width * camera.height as usize];
@@ -49,7 +61,7 @@ pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Rende
         .zip(samples.par_chunks_mut(width))
         .enumerate()
         .map(|(row, (line, taken))| {
-            let counts = render_row(scene, row as u32, line, taken);
+            let counts = render_row(row as u32, line, taken);
             progress(u64::from(scene.settings.samples));
             counts
         })
@@ -71,10 +83,6 @@ pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Rende
 /// Renders row `row` of `scene` into `line` (each pixel's radiance) and `taken` (the
 /// samples each took); returns the rays traced and the samples dropped.
 pub fn render_row(scene: &Scene, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (u64, u64) {
-    #[cfg(feature = "s3")]
-    if paths_at_once::applies(scene) {
-        return paths_at_once::row(scene, row, line, taken);
-    }
     let mut tracer = Tracer::new(scene);
     for (column, (value, taken)) in line.iter_mut().zip(taken).enumerate() {
         let before = tracer.samples;

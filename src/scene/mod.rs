@@ -6,7 +6,7 @@
 //! | [`objects`] | 1 | the scene and the nearest hit among its spheres |
 //! | [`settings`] | 1 | how a scene is rendered: samples, bounces, gamma, ... |
 //! | [`occlusion`] | 2 | whether anything lies on a shadow ray |
-//! | [`sampling`] | 3 | how a pixel's samples are placed, and how many it takes |
+//! | [`beyond`] | 3 | settings beyond the course: samplers, adaptive sampling, the fast engine |
 //! | [`mesh_hits`] | 5 | the nearest hit among the meshes |
 
 pub mod objects;
@@ -16,7 +16,7 @@ pub mod settings;
 pub mod occlusion;
 
 #[cfg(feature = "s3")]
-pub mod sampling;
+pub mod beyond;
 
 #[cfg(feature = "s5")]
 pub mod mesh_hits;

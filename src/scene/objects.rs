@@ -6,8 +6,6 @@ use crate::lights::Light;
 use crate::maths::Real;
 use crate::scene::Settings;
 
-#[cfg(feature = "s3")]
-use crate::fast::sphere_lanes::SphereLanes;
 #[cfg(feature = "s5")]
 use crate::meshes::Mesh;
 
@@ -29,10 +27,6 @@ pub struct Scene {
     pub light: Option<Light>,
     /// How it is rendered.
     pub settings: Settings,
-    /// The spheres by coordinate, four at a time (session 3), made from `spheres`
-    /// at the first ray traced.
-    #[cfg(feature = "s3")]
-    pub lanes: std::sync::OnceLock<SphereLanes>,
 }
 // ANCHOR_END: scene
 
@@ -104,7 +98,6 @@ impl Scene {
     /// The distance to the nearest sphere that `ray` hits and that sphere's index:
     /// every sphere is tested and the smallest positive distance wins, the first
     /// sphere on a tie.
-    #[cfg(not(feature = "s3"))]
     pub fn nearest_sphere(&self, ray: &Ray) -> Option<(Real, usize)> {
         let mut nearest: Option<(Real, usize)> = None;
         for (i, sphere) in self.spheres.iter().enumerate() {
@@ -117,14 +110,4 @@ impl Scene {
         nearest
     }
     // ANCHOR_END: nearest_sphere
-
-    /// The distance to the nearest sphere that `ray` hits and that sphere's index,
-    /// from session 3 on: the same answer, to the last bit, with the spheres tested
-    /// four at a time ([`SphereLanes`], made at the first ray).
-    #[cfg(feature = "s3")]
-    pub fn nearest_sphere(&self, ray: &Ray) -> Option<(Real, usize)> {
-        self.lanes
-            .get_or_init(|| SphereLanes::new(&self.spheres))
-            .nearest(ray)
-    }
 }

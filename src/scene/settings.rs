@@ -5,7 +5,7 @@ use smart_default::SmartDefault;
 use crate::maths::Real;
 
 #[cfg(feature = "s3")]
-use crate::scene::sampling::Sampling;
+use crate::scene::beyond::Beyond;
 
 // ANCHOR: settings
 /// How a scene is rendered. Every setting is read from the scene file; the later
@@ -37,9 +37,9 @@ pub struct Settings {
     /// Past the bounce limit, the probability that a path goes on (Russian roulette,
     /// session 4); `None`: paths stop at the limit.
     pub russian_roulette: Option<Real>,
-    /// How a pixel's samples are placed and how many it takes (session 3, beyond
-    /// the course).
+    /// What a render uses beyond the course (session 3 on): another sampler,
+    /// adaptive sampling, the fast engine.
     #[cfg(feature = "s3")]
-    pub sampling: Sampling,
+    pub beyond: Beyond,
 }
 // ANCHOR_END: settings

@@ -71,7 +71,7 @@ pub enum FilterSpec {
     Bilinear,
 }
 
-/// `acceleration = "none"`, `"bbox"`, `"bvh"` or `"fast"`: how meshes are searched.
+/// `acceleration = "none"`, `"bbox"` or `"bvh"`: how meshes are searched.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
 #[serde(rename_all = "kebab-case")]
 pub enum AccelerationSpec {
@@ -80,11 +80,9 @@ pub enum AccelerationSpec {
     None,
     /// Test the mesh's bounding box first (session 5).
     Bbox,
-    /// A bounding volume hierarchy (session 6).
+    /// A bounding volume hierarchy (session 6): the course's, or with `fast = true`
+    /// the fast engine's (leaves of at most `leaf_size` triangles).
     Bvh,
-    /// A hierarchy built with the surface area heuristic and laid out for speed
-    /// (after session 6; leaves of at most `leaf_size` triangles).
-    Fast,
 }
 
 /// `triangle_test = "moller-trumbore"` or `"watertight"`: how a ray meets a triangle.
@@ -148,7 +146,7 @@ pub struct RenderSpec {
     pub acceleration: AccelerationSpec,
     /// Which ray-triangle test meshes use (session 5; default watertight).
     pub triangle_test: Option<TriangleTestSpec>,
-    /// Most triangles in a leaf of the `"fast"` hierarchy (default 8).
+    /// Most triangles in a leaf of the fast engine's hierarchy (default 8).
     pub leaf_size: Option<std::num::NonZeroU16>,
     /// How the random numbers of a pixel's samples are chosen (session 3; default
     /// independent).
@@ -156,11 +154,10 @@ pub struct RenderSpec {
     /// Adaptive sampling's target: the relative standard error at which a pixel
     /// stops taking samples (session 3; absent: every pixel takes `samples`).
     pub noise: Option<Positive>,
-    /// Whether each sample is followed by the course's recursive `radiance`, one
-    /// path at a time, rather than four paths at once (session 3; default false:
-    /// the same image either way, the recursion more slowly).
+    /// Whether the fast engine renders, beyond the course (session 3; default false:
+    /// the course's code; the same image either way, the course's more slowly).
     #[serde(default)]
-    pub recursive: bool,
+    pub fast: bool,
 }
 
 fn one() -> NonZeroU32 {

@@ -43,9 +43,9 @@ pub struct Overrides {
     pub plunge: Option<Real>,
     /// Adaptive sampling's target relative standard error (session 3).
     pub noise: Option<Real>,
-    /// Follow every sample by the course's recursion (session 3); `false` leaves
+    /// Render with the fast engine (session 3, beyond the course); `false` leaves
     /// the scene file's choice.
-    pub recursive: bool,
+    pub fast: bool,
 }
 
 impl Overrides {
@@ -59,7 +59,7 @@ impl Overrides {
             file.render.noise = Some(Positive::try_from(noise).map_err(|e| ("render.noise", e))?);
         }
         let r = &mut file.render;
-        r.recursive |= self.recursive;
+        r.fast |= self.fast;
         r.width = self.width.unwrap_or(r.width);
         r.height = self.height.unwrap_or(r.height);
         r.samples = self.samples.unwrap_or(r.samples);

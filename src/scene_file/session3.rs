@@ -4,29 +4,29 @@
 use std::path::Path;
 
 use crate::camera::PixelFilter;
-use crate::maths::Sampler;
 use crate::scene::Scene;
-use crate::scene::sampling::Sampling;
+use crate::scene::beyond::Beyond;
+use crate::scene::beyond::Sampler;
 use crate::scene_file::format::{SamplerSpec, SceneFile};
 use crate::scene_file::{SceneError, session1};
 
 /// The scene of session 1 with what session 3 reads in `file`: the Gaussian jitter of
 /// camera rays (`camera.antialiasing`, its standard deviation in pixels), the
 /// sampler (`render.sampler`), adaptive sampling's target (`render.noise`) and the
-/// choice of the recursion (`render.recursive`).
+/// fast engine (`render.fast`), all three beyond the course.
 pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
     let mut scene = session1::scene(file, path)?;
     if let Some(sigma) = file.camera.antialiasing {
         scene.camera.filter = PixelFilter::Gaussian { sigma: sigma.0 };
     }
-    scene.settings.sampling = Sampling {
+    scene.settings.beyond = Beyond {
         sampler: match file.render.sampler.unwrap_or_default() {
             SamplerSpec::Independent => Sampler::Independent,
             SamplerSpec::Stratified => Sampler::Stratified,
             SamplerSpec::Sobol => Sampler::Sobol,
         },
         noise: file.render.noise.map(|n| n.0),
-        recursive: file.render.recursive,
+        fast: file.render.fast,
     };
     Ok(scene)
 }

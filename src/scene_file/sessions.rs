@@ -88,12 +88,7 @@ const KEYS: &[SessionKey] = &[
         3,
         "adaptive sampling",
     ),
-    (
-        |f| f.render.recursive,
-        "render.recursive",
-        3,
-        "a choice of how paths are followed",
-    ),
+    (|f| f.render.fast, "render.fast", 3, "the fast engine"),
     (
         |f| f.render.light_sampling,
         "render.light_sampling",
@@ -127,12 +122,7 @@ const KEYS: &[SessionKey] = &[
         "triangle meshes",
     ),
     (
-        |f| {
-            matches!(
-                f.render.acceleration,
-                AccelerationSpec::Bvh | AccelerationSpec::Fast
-            )
-        },
+        |f| f.render.acceleration == AccelerationSpec::Bvh,
         "render.acceleration",
         6,
         "a bounding volume hierarchy",

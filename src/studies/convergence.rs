@@ -3,8 +3,9 @@
 
 use std::time::Instant;
 
+use crate::engines::render_reporting;
 use crate::maths::Real;
-use crate::render::{Film, render_reporting};
+use crate::render::Film;
 use crate::scene::Scene;
 
 /// How far an image is from the reference, over every pixel and channel of linear

@@ -34,7 +34,7 @@ pub struct VariantError {
 
 impl Variant {
     /// Reads `label:key=value,key=value`. Values are TOML (`2`, `true`, `0.5`); a
-    /// bare word is a string (`acceleration=fast`). Without a label, the edits,
+    /// bare word is a string (`acceleration=bvh`). Without a label, the edits,
     /// separated by spaces, name the variant. The label is a column of the CSV, so it
     /// may not hold a comma.
     pub fn parse(text: &str) -> Result<Variant, VariantError> {
@@ -179,17 +179,17 @@ const COMPARISONS: &[(&str, &[&str], &str)] = &[
             "brute force:render.acceleration=none",
             "bounding box:render.acceleration=bbox",
             "BVH:render.acceleration=bvh",
-            "fast BVH:render.acceleration=fast",
+            "fast BVH:render.acceleration=bvh,render.fast=true",
         ],
         "",
     ),
     (
         "leaf",
         &[
-            "leaf 1:render.acceleration=fast,render.leaf_size=1",
-            "leaf 4:render.acceleration=fast,render.leaf_size=4",
-            "leaf 16:render.acceleration=fast,render.leaf_size=16",
-            "leaf 64:render.acceleration=fast,render.leaf_size=64",
+            "leaf 1:render.acceleration=bvh,render.fast=true,render.leaf_size=1",
+            "leaf 4:render.acceleration=bvh,render.fast=true,render.leaf_size=4",
+            "leaf 16:render.acceleration=bvh,render.fast=true,render.leaf_size=16",
+            "leaf 64:render.acceleration=bvh,render.fast=true,render.leaf_size=64",
         ],
         "",
     ),

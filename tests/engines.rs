@@ -1,0 +1,158 @@
+//! The course's code against the fast engine: every stage of the build gives the same
+//! radiance, to the last bit, with the same counts of rays and samples, whether it
+//! renders by default (the course's functions) or with `[render] fast = true`; and
+//! the fast engine does take over where it can (four paths at a time in the rooms of
+//! diffuse spheres, its own hierarchy for the meshes).
+#![cfg(feature = "s3")]
+
+use std::num::NonZeroU32;
+
+use raycourse::fast::paths_at_once;
+use raycourse::scene::beyond::Sampler;
+use raycourse::{Overrides, Render, Scene, Stage, render, stages};
+
+/// The scene of `stage` at 30 x 9 pixels (30 is not a multiple of four, so rows end
+/// with fewer than four paths), at most `samples` samples per pixel, with the stage's
+/// sampler or `sampler`.
+fn small(stage: &Stage, samples: u32, extra: Overrides, sampler: Option<Sampler>) -> Scene {
+    let overrides = Overrides {
+        width: NonZeroU32::new(30),
+        height: NonZeroU32::new(9),
+        samples: NonZeroU32::new(samples),
+        ..extra
+    };
+    let mut scene = stage.scene(&overrides).unwrap();
+    if let Some(sampler) = sampler {
+        scene.settings.beyond.sampler = sampler;
+    }
+    scene
+}
+
+/// Renders `stage` both ways and asserts that the two renders agree; returns the
+/// fast engine's scene and render.
+fn same(
+    stage: &Stage,
+    samples: u32,
+    extra: Overrides,
+    sampler: Option<Sampler>,
+) -> (Scene, Render) {
+    let course = small(stage, samples, extra, sampler);
+    assert!(
+        !course.settings.beyond.fast,
+        "{}: the default is the course's code",
+        stage.name
+    );
+    let fast = small(
+        stage,
+        samples,
+        Overrides {
+            fast: true,
+            ..extra
+        },
+        sampler,
+    );
+    assert!(
+        fast.settings.beyond.fast,
+        "{}: --fast is obeyed",
+        stage.name
+    );
+    let (by_course, by_fast) = (render(&course), render(&fast));
+    let bits = |r: &Render| -> Vec<_> {
+        r.film
+            .pixels
+            .iter()
+            .map(|c| c.to_array().map(|x| x.to_bits()))
+            .collect()
+    };
+    let (a, b) = (bits(&by_course), bits(&by_fast));
+    let first = a.iter().zip(&b).position(|(a, b)| a != b);
+    assert_eq!(first, None, "{}: first pixel that differs", stage.name);
+    assert_eq!(by_course.rays, by_fast.rays, "{}: rays", stage.name);
+    assert_eq!(
+        by_course.samples, by_fast.samples,
+        "{}: samples",
+        stage.name
+    );
+    assert_eq!(
+        by_course.dropped, by_fast.dropped,
+        "{}: dropped",
+        stage.name
+    );
+    (fast, by_fast)
+}
+
+/// The stages whose objects are all diffuse spheres, in the course's order: the fast
+/// engine follows their paths four at a time.
+const DIFFUSE_SPHERE_STAGES: [&str; 11] = [
+    "white-disk",
+    "shading",
+    "spheres",
+    "gamma",
+    "shadows",
+    "indirect",
+    "antialiasing",
+    "soft-shadows",
+    "light-sampling",
+    "depth-of-field",
+    "russian-roulette",
+];
+
+#[test]
+fn every_stage_renders_the_same_bytes_with_the_fast_engine() {
+    let mut four_at_a_time = vec![];
+    for stage in stages() {
+        let (scene, _) = same(stage, 4, Overrides::default(), None);
+        if paths_at_once::applies(&scene) {
+            four_at_a_time.push(stage.name);
+        }
+        #[cfg(feature = "s6")]
+        for mesh in &scene.meshes {
+            if stage.name != "mesh" && stage.name != "mesh-bbox" {
+                assert_eq!(
+                    mesh.search.name(),
+                    "fast",
+                    "{}: the fast hierarchy",
+                    stage.name
+                );
+            }
+        }
+    }
+    // The mirror, glass and mesh stages take the course's recursion; the stages of
+    // later sessions are absent from an earlier session's build.
+    let expected: Vec<&str> = DIFFUSE_SPHERE_STAGES
+        .into_iter()
+        .filter(|name| stages().any(|stage| stage.name == *name))
+        .collect();
+    assert_eq!(four_at_a_time, expected);
+    assert!(four_at_a_time.contains(&"indirect"));
+}
+
+#[test]
+fn adaptive_sampling_stops_each_pixel_at_the_same_sample() {
+    let adaptive = Overrides {
+        noise: Some(0.05),
+        ..Overrides::default()
+    };
+    let stage = stages().find(|s| s.name == "antialiasing").unwrap();
+    let (scene, render) = same(stage, 16, adaptive, None);
+    assert!(paths_at_once::applies(&scene));
+    let fewest = render.samples.iter().min().unwrap();
+    let most = render.samples.iter().max().unwrap();
+    assert!(
+        fewest < most,
+        "pixels stop at different counts: {fewest} to {most}"
+    );
+}
+
+#[test]
+fn stratified_and_sobol_numbers_are_drawn_in_the_course_order() {
+    for name in ["antialiasing", "light-sampling", "depth-of-field"] {
+        let Some(stage) = stages().find(|s| s.name == name) else {
+            continue;
+        };
+        for sampler in [Sampler::Stratified, Sampler::Sobol] {
+            let (scene, _) = same(stage, 8, Overrides::default(), Some(sampler));
+            assert!(paths_at_once::applies(&scene), "{name}");
+        }
+    }
+}
