@@ -57,6 +57,8 @@
 //! ```
 
 #![warn(missing_docs)]
+#![deny(unsafe_code)]
+#![warn(clippy::undocumented_unsafe_blocks)]
 
 #[cfg(not(feature = "s1"))]
 compile_error!("raycourse needs at least the first session: enable feature s1 (or a later one)");

@@ -4,20 +4,22 @@
 //!
 //! | file | session | what it holds | in place of |
 //! |---|---|---|---|
-//! | [`sphere_group`] | 3 | four spheres by coordinate, and the ray-sphere test on all four | `Sphere::intersect` |
-//! | `sphere_group_avx` | 3 | the same test in AVX instructions, on x86-64 | `Sphere::intersect` |
-//! | [`sphere_lanes`] | 3 | a scene's spheres in groups of four, and the nearest one | `Scene::nearest_sphere` |
+//! | [`lanes`] | 3 | the four-ray sphere test, written once for any type of lanes | `Sphere::intersect` |
+//! | [`portable`] | 3 | its lanes on any processor (the `wide` crate) | |
+//! | `avx` | 3 | its lanes in AVX instructions, on x86-64 | |
+//! | [`sphere_lanes`] | 3 | the nearest sphere of each of four rays | `Scene::nearest_sphere` |
 //! | [`paths_at_once`] | 3 | a row's pixels four paths at a time | `pixel` and `radiance` |
 //! | [`direct_at_once`] | 3 | the direct light of four paths, their shadow rays traced together | `direct_light` |
 //! | [`sah`] | 6 | splits chosen by the surface area heuristic | `Bvh::build` |
 //! | [`fast_bvh`] | 6 | four boxes and four triangles tested at once | `Bvh` |
 //! | [`triangle_group`] | 6 | the single-precision pre-test of four triangles | the ray-triangle test |
 
-pub mod direct_at_once;
-pub mod paths_at_once;
-pub mod sphere_group;
 #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
-pub mod sphere_group_avx;
+pub mod avx;
+pub mod direct_at_once;
+pub mod lanes;
+pub mod paths_at_once;
+pub mod portable;
 pub mod sphere_lanes;
 
 #[cfg(feature = "s6")]

@@ -25,7 +25,7 @@ use crate::fast::sphere_lanes::SphereLanes;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
 use crate::materials::Material;
-use crate::maths::{Colour, Real, uniform};
+use crate::maths::{Colour, Real};
 use crate::samplers::adaptive::{Estimate, precise_enough};
 use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
@@ -99,7 +99,8 @@ fn step(spheres: &SphereLanes, paths: &mut [Path]) {
     }
     for (path, hit) in paths.iter_mut().zip(&hits) {
         if let Some((hit, albedo)) = hit {
-            path.direct = Some(Direct::at(&mut path.tracer, hit, *albedo));
+            let (direct, skipped) = Direct::at(&mut path.tracer, hit, *albedo);
+            (path.direct, path.skipped) = (Some(direct), skipped);
         }
     }
     for (path, hit) in paths.iter_mut().zip(&hits) {
@@ -137,17 +138,17 @@ struct Level {
 }
 
 /// How a path went on after a diffuse hit: the cases of
-/// [`Tracer::diffuse`](crate::integrator::Tracer::diffuse) and of the bounce limit.
+/// [`Tracer::diffuse`](crate::integrator::Tracer::diffuse) and of
+/// [`Tracer::next_bounce`](crate::integrator::Tracer::next_bounce).
 #[derive(Clone, Copy, Debug)]
 enum Next {
     /// The scene has no indirect light: the hit reflects `direct` alone.
     NoIndirect,
-    /// The bounce limit was reached (and the roulette, if any, ended the path).
+    /// The path stopped: the bounce limit was reached (and Russian roulette, if
+    /// any, ended it).
     Stopped,
-    /// A bounce within the limit.
-    Bounced,
-    /// A bounce past the limit that survived Russian roulette with this probability.
-    Survived(Real),
+    /// The path bounced, and what it brings back has this weight.
+    Bounced(Real),
 }
 
 impl Level {
@@ -158,8 +159,7 @@ impl Level {
         let reflected = match self.next {
             Next::NoIndirect => self.direct,
             Next::Stopped => self.direct + Colour::ZERO,
-            Next::Bounced => self.direct + self.albedo * rest,
-            Next::Survived(survival) => self.direct + (1.0 / survival) * (self.albedo * rest),
+            Next::Bounced(weight) => self.direct + weight * (self.albedo * rest),
         };
         match self.emission {
             Some(emission) => emission + reflected,
@@ -190,7 +190,8 @@ struct Path<'s> {
     direct: Option<Direct>,
     /// Whether the path ended at its last ray.
     ended: bool,
-    /// The object whose emission indirect rays do not count ([`skipped`]).
+    /// The object whose emission the bounced ray of the last hit does not count,
+    /// because light sampling counted it there (session 4).
     skipped: Option<usize>,
 }
 
@@ -212,7 +213,7 @@ impl<'s> Path<'s> {
             levels: Vec::new(),
             direct: None,
             ended: false,
-            skipped: skipped(scene),
+            skipped: None,
         }
     }
 
@@ -279,20 +280,19 @@ impl<'s> Path<'s> {
         }
     }
 
-    /// How the path goes on after a hit: the random number of the roulette is
-    /// drawn where the recursion draws it.
+    /// How the path goes on after a hit: by the course's
+    /// [`next_bounce`](crate::integrator::Tracer::next_bounce), which draws the
+    /// roulette's random number where the recursion draws it.
     fn next(&mut self) -> Next {
-        let settings = &self.tracer.scene.settings;
-        if !settings.indirect {
+        if !self.tracer.scene.settings.indirect {
             return Next::NoIndirect;
         }
-        if let Some(left) = self.bounces.checked_sub(1) {
-            self.bounces = left;
-            return Next::Bounced;
-        }
-        match roulette(settings) {
-            Some(survival) if uniform(&mut self.tracer.rng) < survival => Next::Survived(survival),
-            _ => Next::Stopped,
+        match self.tracer.next_bounce(self.bounces) {
+            Some((left, weight)) => {
+                self.bounces = left;
+                Next::Bounced(weight)
+            }
+            None => Next::Stopped,
         }
     }
 
@@ -310,36 +310,4 @@ impl<'s> Path<'s> {
             self.start_sample();
         }
     }
-}
-
-/// The object whose emission indirect rays do not count because light sampling
-/// counts it: none before session 4.
-#[cfg(not(feature = "s4"))]
-fn skipped(_: &Scene) -> Option<usize> {
-    None
-}
-
-/// The object whose emission indirect rays do not count because light sampling
-/// counts it, if any.
-#[cfg(feature = "s4")]
-fn skipped(scene: &Scene) -> Option<usize> {
-    match scene.light {
-        Some(crate::lights::Light::Sphere(light)) if scene.settings.light_sampling => {
-            Some(light.object)
-        }
-        _ => None,
-    }
-}
-
-/// The survival probability of Russian roulette past the bounce limit: none before
-/// session 4.
-#[cfg(not(feature = "s4"))]
-fn roulette(_: &crate::scene::Settings) -> Option<Real> {
-    None
-}
-
-/// The survival probability of Russian roulette past the bounce limit.
-#[cfg(feature = "s4")]
-fn roulette(settings: &crate::scene::Settings) -> Option<Real> {
-    settings.russian_roulette
 }

@@ -1,5 +1,4 @@
-//! One more bounce of a path, while it may still bounce. Session 4 replaces it by
-//! Russian roulette (`integrator/roulette.rs`).
+//! One more bounce of a path, while it may still bounce.
 
 use crate::integrator::Tracer;
 use crate::maths::Colour;
@@ -7,12 +6,11 @@ use crate::maths::Colour;
 impl Tracer<'_> {
     // ANCHOR: bounce
     /// The light a path brings back from one more bounce: `go_on(tracer, bounces
-    /// left after it)` while `bounces`, the bounces still allowed, is above 0; black
-    /// once they are used up. Session 4 lets a path go on past the limit by chance
-    /// (Russian roulette).
+    /// left after it)`, times the bounce's weight, while [`Tracer::next_bounce`] lets
+    /// the path go on; black once it stops.
     pub fn bounce(&mut self, bounces: u32, go_on: impl FnOnce(&mut Self, u32) -> Colour) -> Colour {
-        match bounces.checked_sub(1) {
-            Some(next) => go_on(self, next),
+        match self.next_bounce(bounces) {
+            Some((next, weight)) => weight * go_on(self, next),
             None => Colour::ZERO,
         }
     }

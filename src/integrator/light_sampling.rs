@@ -22,23 +22,39 @@ impl Tracer<'_> {
 
     // ANCHOR: light_sampling
     /// Light arriving straight from the sphere light at a diffuse point, estimated
-    /// with one direction sampled towards the light:
-    /// `L = Le (albedo / pi) cos(theta) / pdf(w)`, 0 when an object is in the way
-    /// (the ray counted as one, and only the object it meets first looked up).
+    /// with one direction sampled towards the light: what [`Tracer::light_sample`]
+    /// brings if the first object its ray meets is the light, 0 when another object
+    /// is in the way (only the object it meets first is looked up).
     pub fn sample_light(&mut self, light: &SphereLight, hit: &Hit, albedo: Colour) -> Colour {
+        match self.light_sample(light, hit, albedo) {
+            Some((ray, lit)) => match self.scene.nearest(&ray) {
+                Some((_, seen)) if seen == light.object => lit,
+                _ => Colour::ZERO,
+            },
+            None => Colour::ZERO,
+        }
+    }
+
+    /// One direction drawn towards the sphere light from a diffuse point, as a ray
+    /// from the point (counted as one ray), and the light it brings if nothing is in
+    /// the way: `L = Le (albedo / pi) cos(theta) / pdf(w)`. `None` where it brings
+    /// nothing: the point is inside the light, or the direction lies below the
+    /// surface.
+    pub fn light_sample(
+        &mut self,
+        light: &SphereLight,
+        hit: &Hit,
+        albedo: Colour,
+    ) -> Option<(Ray, Colour)> {
         let (u1, u2) = uniform_pair(&mut self.rng);
-        let Some((direction, pdf)) = light.sample(hit.point, u1, u2) else {
-            return Colour::ZERO;
-        };
+        let (direction, pdf) = light.sample(hit.point, u1, u2)?;
         let cos = direction.dot(hit.normal);
         if cos <= 0.0 {
-            return Colour::ZERO;
+            return None;
         }
         self.rays += 1;
-        match self.scene.nearest(&hit.spawn(direction)) {
-            Some((_, seen)) if seen == light.object => light.emission * albedo / PI * cos / pdf,
-            _ => Colour::ZERO,
-        }
+        let lit = light.emission * albedo / PI * cos / pdf;
+        Some((hit.spawn(direction), lit))
     }
     // ANCHOR_END: light_sampling
 
@@ -47,14 +63,20 @@ impl Tracer<'_> {
     /// bounced ray does not count the glow of the light already sampled at this
     /// point: it would be counted twice.
     pub fn indirect_light(&mut self, hit: &Hit, albedo: Colour, bounces: u32) -> Colour {
-        let skip = match self.scene.light {
-            Some(Light::Sphere(light)) if self.scene.settings.light_sampling => Some(light.object),
-            _ => None,
-        };
+        let skip = self.sampled_light();
         self.bounce(bounces, |tracer, next| {
             let direction = tracer.cosine_direction(hit);
             albedo * tracer.radiance_skipping(&hit.spawn(direction), next, skip)
         })
+    }
+
+    /// The object whose glow a bounced ray does not count: the sphere light, when
+    /// light sampling counts its light at every diffuse hit.
+    pub fn sampled_light(&self) -> Option<usize> {
+        match self.scene.light {
+            Some(Light::Sphere(light)) if self.scene.settings.light_sampling => Some(light.object),
+            _ => None,
+        }
     }
 
     /// [`Tracer::radiance`], but the glow of object `skip` is not counted.

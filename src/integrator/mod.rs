@@ -9,20 +9,23 @@
 //! | [`radiance`] | 1 | `radiance`: emitted plus reflected light, by material |
 //! | [`direct`] | 1 | light from the light source: Lambert's law under a point light |
 //! | [`shadows`] | 2 | shadow rays |
-//! | `bounce` | 2, 3 | one more bounce, while the path may still bounce |
+//! | [`bounce`] | 2 | one more bounce, weighted, while the path goes on |
+//! | `bounce_limit` | 2, 3 | whether the path goes on: while bounces are left |
 //! | [`specular`] | 2 | mirrors and glass |
 //! | [`diffuse`] | 3 | a diffuse surface's direct and indirect light; cosine-weighted directions |
 //! | `indirect` | 3 | indirect light by Monte Carlo: one bounce in a random direction |
 //! | [`light_sampling`] | 4 | direct light from a sphere light, sampled; indirect light without it |
-//! | [`roulette`] | 4 | Russian roulette past the bounce limit |
+//! | [`roulette`] | 4 | whether the path goes on: Russian roulette past the bounce limit |
 //! | [`fresnel_glass`] | 4 | glass that reflects part of the light |
 
 pub mod direct;
 pub mod radiance;
 pub mod tracer;
 
-#[cfg(all(feature = "s2", not(feature = "s4")))]
+#[cfg(feature = "s2")]
 pub mod bounce;
+#[cfg(all(feature = "s2", not(feature = "s4")))]
+pub mod bounce_limit;
 #[cfg(feature = "s2")]
 pub mod shadows;
 #[cfg(feature = "s2")]

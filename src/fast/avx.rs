@@ -1,0 +1,141 @@
+//! The four-ray sphere test in AVX instructions, four `f64` per instruction, on the
+//! x86-64 processors that have them (almost all made since 2011). The processor is
+//! asked at run time ([`Avx::detect`]), so the build needs no flag.
+//!
+//! Every function here is a safe function compiled with AVX
+//! (`#[target_feature(enable = "avx")]`): inside them the AVX instructions are safe
+//! to call. Calling one from code compiled without AVX is not, and is done in one
+//! place, [`Avx::nearest_of_four`], which holds the proof that the processor has
+//! AVX. That call is the crate's only `unsafe` code.
+#![allow(unsafe_code)]
+
+use std::arch::x86_64::{
+    __m256d, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_cvtsd_f64, _mm_unpackhi_pd,
+    _mm256_add_pd, _mm256_and_pd, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd256_pd128,
+    _mm256_cmp_pd, _mm256_div_pd, _mm256_extractf128_pd, _mm256_mul_pd, _mm256_or_pd,
+    _mm256_set_pd, _mm256_set1_pd, _mm256_sqrt_pd, _mm256_sub_pd, _mm256_xor_pd,
+};
+
+use crate::fast::lanes::four_ray_sphere_test;
+use crate::geometry::Ray;
+
+/// Four `f64`, one per lane of an AVX register.
+type L = __m256d;
+
+/// Proof that this processor has AVX: made only by [`Avx::detect`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Avx(());
+
+impl Avx {
+    /// `Some` where the processor has AVX.
+    pub fn detect() -> Option<Avx> {
+        std::arch::is_x86_feature_detected!("avx").then_some(Avx(()))
+    }
+
+    /// The four-ray test of [`crate::fast::lanes`] (its `nearest_of_four`) in AVX
+    /// instructions, on this processor, which has them.
+    pub fn nearest_of_four(
+        self,
+        spheres: &[[f64; 5]],
+        rays: [&Ray; 4],
+    ) -> [Option<(f64, usize)>; 4] {
+        // SAFETY: an `Avx` is made only by `detect`, where the processor has AVX, so
+        // the AVX instructions of `nearest_of_four` can run.
+        unsafe { nearest_of_four(spheres, rays) }
+    }
+}
+
+#[target_feature(enable = "avx")]
+#[inline]
+fn splat(x: f64) -> L {
+    _mm256_set1_pd(x)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn gather(values: [f64; 4]) -> L {
+    _mm256_set_pd(values[3], values[2], values[1], values[0])
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn lanes(v: L) -> [f64; 4] {
+    let (low, high) = (_mm256_castpd256_pd128(v), _mm256_extractf128_pd::<1>(v));
+    let second = |half| _mm_cvtsd_f64(_mm_unpackhi_pd(half, half));
+    [
+        _mm_cvtsd_f64(low),
+        second(low),
+        _mm_cvtsd_f64(high),
+        second(high),
+    ]
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn add(a: L, b: L) -> L {
+    _mm256_add_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn sub(a: L, b: L) -> L {
+    _mm256_sub_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn mul(a: L, b: L) -> L {
+    _mm256_mul_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn div(a: L, b: L) -> L {
+    _mm256_div_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn neg(a: L) -> L {
+    _mm256_xor_pd(a, _mm256_set1_pd(-0.0))
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn sqrt(a: L) -> L {
+    _mm256_sqrt_pd(a)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn or(a: L, b: L) -> L {
+    _mm256_or_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn and(a: L, b: L) -> L {
+    _mm256_and_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn and_not(a: L, b: L) -> L {
+    _mm256_andnot_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn lt(a: L, b: L) -> L {
+    _mm256_cmp_pd::<_CMP_LT_OQ>(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn gt(a: L, b: L) -> L {
+    _mm256_cmp_pd::<_CMP_GT_OQ>(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn ge(a: L, b: L) -> L {
+    _mm256_cmp_pd::<_CMP_GE_OQ>(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn ne(a: L, b: L) -> L {
+    _mm256_cmp_pd::<_CMP_NEQ_OQ>(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn select(mask: L, a: L, b: L) -> L {
+    _mm256_blendv_pd(b, a, mask)
+}
+
+four_ray_sphere_test!(#[target_feature(enable = "avx")]);

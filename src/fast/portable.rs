@@ -1,0 +1,101 @@
+//! The four-ray sphere test on any processor: the lanes of the `wide` crate, which
+//! uses the SIMD instructions the build targets (two `f64` per instruction on any
+//! x86-64) and plain arithmetic elsewhere.
+
+use crate::fast::lanes::four_ray_sphere_test;
+use crate::maths::Real;
+
+/// Four [`Real`] numbers, one per lane.
+#[cfg(not(feature = "f32"))]
+type L = wide::f64x4;
+/// Four [`Real`] numbers, one per lane.
+#[cfg(feature = "f32")]
+type L = wide::f32x4;
+
+/// `x` in every lane.
+#[inline]
+fn splat(x: Real) -> L {
+    L::splat(x)
+}
+/// The four numbers of `values`, one per lane.
+#[inline]
+fn gather(values: [Real; 4]) -> L {
+    L::from(values)
+}
+/// The four numbers of `v`.
+#[inline]
+fn lanes(v: L) -> [Real; 4] {
+    v.to_array()
+}
+/// `a + b`, lane by lane.
+#[inline]
+fn add(a: L, b: L) -> L {
+    a + b
+}
+/// `a - b`, lane by lane.
+#[inline]
+fn sub(a: L, b: L) -> L {
+    a - b
+}
+/// `a * b`, lane by lane.
+#[inline]
+fn mul(a: L, b: L) -> L {
+    a * b
+}
+/// `a / b`, lane by lane.
+#[inline]
+fn div(a: L, b: L) -> L {
+    a / b
+}
+/// `-a`, lane by lane (the sign bit flipped).
+#[inline]
+fn neg(a: L) -> L {
+    -a
+}
+/// The square root of `a`, lane by lane.
+#[inline]
+fn sqrt(a: L) -> L {
+    a.sqrt()
+}
+/// The bits of `a` or those of `b`.
+#[inline]
+fn or(a: L, b: L) -> L {
+    a | b
+}
+/// The bits of `a` and those of `b`.
+#[inline]
+fn and(a: L, b: L) -> L {
+    a & b
+}
+/// The bits of `b` where those of `a` are clear.
+#[inline]
+fn and_not(a: L, b: L) -> L {
+    !a & b
+}
+/// A mask, all ones in the lanes where `a < b`.
+#[inline]
+fn lt(a: L, b: L) -> L {
+    a.simd_lt(b)
+}
+/// A mask, all ones in the lanes where `a > b`.
+#[inline]
+fn gt(a: L, b: L) -> L {
+    a.simd_gt(b)
+}
+/// A mask, all ones in the lanes where `a >= b`.
+#[inline]
+fn ge(a: L, b: L) -> L {
+    a.simd_ge(b)
+}
+/// A mask, all ones in the lanes where `a != b`.
+#[inline]
+fn ne(a: L, b: L) -> L {
+    a.simd_ne(b)
+}
+/// `a` in the lanes where `mask` is set, `b` in the others.
+#[inline]
+fn select(mask: L, a: L, b: L) -> L {
+    mask.select(a, b)
+}
+
+four_ray_sphere_test!();
