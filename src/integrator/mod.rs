@@ -7,6 +7,7 @@
 //! |---|---|---|
 //! | [`tracer`] | 1 | the tracer and its one way of tracing a ray |
 //! | [`radiance`] | 1 | `radiance`: emitted plus reflected light, by material |
+//! | `diffuse_direct` | 1, 2 | a diffuse surface's light: the light source's |
 //! | [`direct`] | 1 | light from the light source: Lambert's law under a point light |
 //! | [`shadows`] | 2 | shadow rays |
 //! | [`bounce`] | 2 | one more bounce, weighted, while the path goes on |
@@ -21,6 +22,9 @@
 pub mod direct;
 pub mod radiance;
 pub mod tracer;
+
+#[cfg(not(feature = "s3"))]
+pub mod diffuse_direct;
 
 #[cfg(feature = "s2")]
 pub mod bounce;

@@ -25,13 +25,10 @@ impl Tracer<'_> {
     /// origin: what each material does.
     #[cfg_attr(
         not(feature = "s2"),
-        expect(unused_variables, reason = "session 2's mirror and glass use them")
+        expect(unused_variables, reason = "session 2's mirror and glass use the ray")
     )]
     pub fn reflected(&mut self, ray: &Ray, hit: &Hit, bounces: u32) -> Colour {
         match hit.material {
-            #[cfg(not(feature = "s3"))]
-            Material::Diffuse { albedo } => self.direct_light(&hit.facing_the_ray(), albedo),
-            #[cfg(feature = "s3")]
             Material::Diffuse { albedo } => self.diffuse(&hit.facing_the_ray(), albedo, bounces),
             #[cfg(feature = "s2")]
             Material::Mirror => self.mirror(ray, hit, bounces),

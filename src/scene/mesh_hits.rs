@@ -1,4 +1,5 @@
-//! The nearest hit among the meshes of a scene.
+//! The nearest hit of a ray among the objects of a scene from session 5 on: the
+//! spheres, then the meshes.
 
 use crate::geometry::{Hit, Ray};
 use crate::maths::Real;
@@ -6,6 +7,18 @@ use crate::meshes::MeshHit;
 use crate::scene::Scene;
 
 impl Scene {
+    // ANCHOR: nearest
+    /// The nearest hit of `ray` among all objects: the nearest sphere, unless a mesh
+    /// is hit closer.
+    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let nearest = self.nearest_sphere(ray);
+        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
+            return Some(hit);
+        }
+        nearest.map(|(t, i)| self.spheres[i].hit_at(ray, t, i))
+    }
+    // ANCHOR_END: nearest
+
     // ANCHOR: nearest_mesh
     /// The nearest mesh hit closer than `t_max`, numbered after the spheres.
     pub fn nearest_mesh(&self, ray: &Ray, t_max: Real) -> Option<Hit> {

@@ -3,11 +3,12 @@
 //!
 //! | file | session | what it holds |
 //! |---|---|---|
-//! | [`objects`] | 1 | the scene and the nearest hit among its spheres |
+//! | [`objects`] | 1 | the scene, and the nearest sphere a ray meets |
 //! | [`settings`] | 1 | how a scene is rendered: samples, bounces, gamma, ... |
 //! | [`occlusion`] | 2 | whether anything lies on a shadow ray |
+//! | `sphere_hits` | 1 to 4 | the nearest hit: among the spheres |
 //! | [`beyond`] | 3 | settings beyond the course: samplers, adaptive sampling, the fast engine |
-//! | [`mesh_hits`] | 5 | the nearest hit among the meshes |
+//! | [`mesh_hits`] | 5 | the nearest hit: among the spheres, then the meshes |
 
 pub mod objects;
 pub mod settings;
@@ -17,6 +18,9 @@ pub mod occlusion;
 
 #[cfg(feature = "s3")]
 pub mod beyond;
+
+#[cfg(not(feature = "s5"))]
+pub mod sphere_hits;
 
 #[cfg(feature = "s5")]
 pub mod mesh_hits;

@@ -1,7 +1,7 @@
 //! Everything a render needs: the camera, the objects, the light and the settings.
 
 use crate::camera::Camera;
-use crate::geometry::{Hit, Ray, Sphere};
+use crate::geometry::{Ray, Sphere};
 use crate::lights::Light;
 use crate::maths::Real;
 use crate::scene::Settings;
@@ -71,27 +71,6 @@ impl Scene {
             }
         }
         text
-    }
-
-    // ANCHOR: nearest
-    /// The nearest hit of `ray` among all objects: every sphere is tested and the
-    /// smallest positive distance wins.
-    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
-        let nearest = self.nearest_sphere(ray);
-        #[cfg(feature = "s5")]
-        if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
-            return Some(hit);
-        }
-        nearest.map(|(t, i)| self.spheres[i].hit_at(ray, t, i))
-    }
-    // ANCHOR_END: nearest
-
-    /// The distance to the nearest object that `ray` hits and that object's index:
-    /// what [`Scene::intersect`] finds, without the hit record a shadow ray has no
-    /// use for. Only spheres until session 5 brings meshes.
-    #[cfg(not(feature = "s5"))]
-    pub fn nearest(&self, ray: &Ray) -> Option<(Real, usize)> {
-        self.nearest_sphere(ray)
     }
 
     // ANCHOR: nearest_sphere
