@@ -246,6 +246,29 @@ fn scene_file_mistakes_are_caught_with_their_hint() {
     }
 }
 
+/// The mistakes are made by editing the stage's scene file as TOML, not as text: the
+/// same file written with other spacing and a comment gets the same diagnosis.
+#[test]
+fn a_scene_file_written_otherwise_gets_the_same_diagnosis() {
+    let cache = cache();
+    let glass = stage("glass");
+    let rewritten = glass
+        .source
+        .replace(" = ", "=")
+        .replace("[render]\n", "[render] # the course's settings\n");
+    assert!(rewritten.contains("{ glass=1.5 }"), "{rewritten}");
+    let other = Stage {
+        source: Box::leak(rewritten.into_boxed_str()),
+        ..*glass
+    };
+    let inverted = |t: &str| t.replace("glass = 1.5", "glass = 0.6666666666666666");
+    let image = picture(&scene(glass, &inverted, 9, None));
+    for stage in [glass, &other] {
+        let report = checked(stage, &image, &cache);
+        assert!(caught(&report, "inverted index"), "{report:?}");
+    }
+}
+
 /// Mistakes of the image's rows and columns: written upside down or mirrored.
 #[test]
 fn flipped_images_are_caught_with_their_hint() {

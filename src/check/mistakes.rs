@@ -8,6 +8,7 @@ use crate::check::expected::{Expected, Source};
 use crate::lights::Light;
 use crate::materials::Material;
 use crate::maths::{PI, Real};
+use crate::meshes::MeshAlbedo;
 use crate::render::Film;
 use crate::scene_file::SceneError;
 
@@ -182,13 +183,19 @@ impl Candidates<'_> {
         (self.expected.scene.settings.samples / 2).max(1)
     }
 
-    /// The stage rendered with its scene file's text changed by `edit`.
-    fn variant(&self, edit: impl Fn(&str) -> String) -> Result<Film, SceneError> {
-        self.source.film(
-            &edit(self.source.stage.source),
-            self.samples(),
-            Some(0x7e57),
-        )
+    /// The stage rendered with its scene file's keys changed by `edit`. The file is
+    /// read as TOML, edited and written out again, so its spacing and comments do
+    /// not matter.
+    fn variant(&self, edit: impl Fn(&mut toml::Table)) -> Result<Film, SceneError> {
+        let mut file: toml::Table = self
+            .source
+            .stage
+            .source
+            .parse()
+            .expect("a stage's scene file is TOML");
+        edit(&mut file);
+        let text = toml::to_string(&file).expect("a TOML table writes out");
+        self.source.film(&text, self.samples(), Some(0x7e57))
     }
 
     /// For a textured stage, the stage rendered with its texture changed texel by
@@ -207,7 +214,8 @@ impl Candidates<'_> {
         else {
             return Ok(None);
         };
-        if !self.source.stage.source.contains("textured = true") {
+        let textured = |m: &crate::meshes::Mesh| matches!(m.albedo, MeshAlbedo::Texture(_));
+        if !self.expected.scene.meshes.iter().any(textured) {
             return Ok(None);
         }
         let Ok(picture) = image::open(&texture).map(|p| p.to_rgb8()) else {
@@ -230,9 +238,13 @@ impl Candidates<'_> {
         if std::fs::create_dir_all(self.source.cache).is_err() || changed.save(&file).is_err() {
             return Ok(None);
         }
-        let texture_line = format!("textured = true\ntexture = {:?}", file.to_string_lossy());
-        self.variant(|text| text.replace("textured = true", &texture_line))
-            .map(Some)
+        let path = toml::Value::String(file.to_string_lossy().into_owned());
+        self.variant(|scene| {
+            for mesh in tables(scene, "meshes") {
+                mesh.insert("texture".into(), path.clone());
+            }
+        })
+        .map(Some)
     }
 }
 
@@ -257,35 +269,46 @@ fn no_falloff(c: &Candidates) -> Result<Option<Film>, SceneError> {
     Ok(Some(film))
 }
 
-/// The image of a stage with glass whose refractive indices are swapped.
+/// The image of a stage with glass whose refractive indices are swapped: each glass
+/// sphere's index `n` made `1 / n`.
 fn inverted_index(c: &Candidates) -> Result<Option<Film>, SceneError> {
-    let text = c.source.stage.source;
-    let Some(start) = text.find("glass = ") else {
+    let glass = |m: &Material| matches!(m, Material::Glass { .. } | Material::FresnelGlass { .. });
+    if !c.expected.scene.spheres.iter().any(|s| glass(&s.material)) {
         return Ok(None);
-    };
-    let number: String = text[start + 8..]
-        .chars()
-        .take_while(|ch| ch.is_ascii_digit() || *ch == '.')
-        .collect();
-    let Ok(index) = number.parse::<f64>() else {
-        return Ok(None);
-    };
-    let inverse = format!("glass = {}", 1.0 / index);
-    let film = if c.expected.deterministic {
-        c.source.film(
-            &text.replace(&format!("glass = {number}"), &inverse),
-            1,
-            None,
-        )?
-    } else {
-        c.variant(|t| t.replace(&format!("glass = {number}"), &inverse))?
-    };
+    }
+    let film = c.variant(|scene| {
+        for sphere in tables(scene, "spheres") {
+            let material = sphere
+                .get_mut("material")
+                .and_then(toml::Value::as_table_mut);
+            for (kind, index) in material.into_iter().flatten() {
+                let n = index.as_float().or(index.as_integer().map(|n| n as f64));
+                if let (true, Some(n)) = (kind == "glass" || kind == "fresnel-glass", n) {
+                    *index = toml::Value::Float(1.0 / n);
+                }
+            }
+        }
+    })?;
     Ok(Some(film))
+}
+
+/// The tables of the array of tables `key` of a scene file (`[[spheres]]`,
+/// `[[meshes]]`).
+fn tables<'t>(file: &'t mut toml::Table, key: &str) -> impl Iterator<Item = &'t mut toml::Table> {
+    let items = file.get_mut(key).and_then(toml::Value::as_array_mut);
+    items
+        .into_iter()
+        .flatten()
+        .filter_map(toml::Value::as_table_mut)
 }
 
 /// The stage's direct light alone: its scene with `indirect = false`.
 fn direct_only(c: &Candidates) -> Result<Film, SceneError> {
-    c.variant(|text| text.replace("indirect = true", "indirect = false"))
+    c.variant(|scene| {
+        if let Some(render) = scene.get_mut("render").and_then(toml::Value::as_table_mut) {
+            render.insert("indirect".into(), toml::Value::Boolean(false));
+        }
+    })
 }
 
 /// The image of a light-sampling stage that counts the light twice: once sampled,
