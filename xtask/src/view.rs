@@ -135,22 +135,15 @@ fn copy_assets(root: &Path, out: &Path, session: u32) -> Result<(), String> {
     Ok(())
 }
 
-/// Copies the tests that apply to the view: the test files pruned, the bad inputs of
-/// sessions 1..N, the snapshots of their stages.
+/// Copies the tests that apply to the view: the snapshot test and the suite's
+/// modules pruned (a module of a later session left out), the bad inputs of sessions
+/// 1..N, the snapshots of their stages.
 fn copy_tests(root: &Path, out: &Path, session: u32) -> Result<(), String> {
     let tests = root.join("tests");
     for file in rust_files(&tests)? {
-        prune_file(
-            &file,
-            &out.join("tests").join(file.file_name().unwrap()),
-            session,
-        )?;
+        module_tree(&file, root, out, session)?;
     }
-    prune_file(
-        &tests.join("common/mod.rs"),
-        &out.join("tests/common/mod.rs"),
-        session,
-    )?;
+    module_tree(&tests.join("suite/main.rs"), root, out, session)?;
     for entry in fs::read_dir(tests.join("bad-input")).map_err(|e| e.to_string())? {
         let path = entry.map_err(|e| e.to_string())?.path();
         let text = fs::read_to_string(&path).unwrap_or_default();

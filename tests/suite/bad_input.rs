@@ -4,12 +4,10 @@
 //! on stderr naming the file and what is wrong, exit code 2, and no change to an
 //! existing output image.
 
-mod common;
-
 use std::ffi::OsStr;
 use std::path::Path;
 
-use common::{run, text};
+use crate::common::{run, text};
 use raycourse::scene_file::SESSION;
 
 struct Case {

@@ -2,7 +2,6 @@
 //! sampling: each number is uniform over many pixels, the images they give have the
 //! same mean as the course's independent numbers with less noise, they do not
 //! depend on the thread count, and an adaptive pixel stops where it should.
-#![cfg(feature = "s4")]
 
 use std::num::NonZeroU32;
 

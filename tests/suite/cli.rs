@@ -1,10 +1,8 @@
 //! The `raycourse` command as a student runs it.
 
-mod common;
-
 use std::path::Path;
 
-use common::{run, text};
+use crate::common::{run, text};
 use raycourse::stages;
 
 #[test]

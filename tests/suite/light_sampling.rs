@@ -3,7 +3,6 @@
 //! when an indirect ray hits it; with no bounce, the light-sampling stage aims at
 //! it directly. Both estimate the direct light on the floor: they must agree in mean,
 //! and light sampling must be several times more accurate at equal samples.
-#![cfg(feature = "s4")]
 
 use std::num::NonZeroU32;
 

@@ -1,13 +1,10 @@
 //! `raycourse converge` and `raycourse plot`: the error of Monte Carlo renders
 //! against a reference, measured as a student runs it. Both arrive with session 3,
 //! when rendering becomes a trade between time and noise.
-#![cfg(feature = "s3")]
-
-mod common;
 
 use std::path::Path;
 
-use common::{run, text};
+use crate::common::{run, text};
 use raycourse::maths::Real;
 use raycourse::studies::convergence::fitted_slope;
 use raycourse::studies::convergence::{Rung, read_rungs};

@@ -1,6 +1,5 @@
 //! Meshes: what the loader reads from the two assets, that the bounding box and the
 //! BVH find exactly the hit that brute force finds, and clear errors for bad files.
-#![cfg(feature = "s5")]
 
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};

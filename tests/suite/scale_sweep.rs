@@ -12,7 +12,6 @@
 //! their own surface, at every scale: the counter-example. In single precision the
 //! renderer is still free of self-hits, but a room a hundredth of its size and ten
 //! thousand units away is below its resolution: that failure is asserted too.
-#![cfg(feature = "s3")]
 
 use std::path::Path;
 

@@ -2,14 +2,11 @@
 //! its number of samples; each classic mistake, made by a real mutant of the
 //! renderer (a scene-file edit, or a variant of the code written here), fails and
 //! gets its hint.
-#![cfg(feature = "s7")]
-
-mod common;
 
 use std::num::NonZeroU32;
 use std::path::{Path, PathBuf};
 
-use common::{run, text};
+use crate::common::{run, text};
 use image::RgbImage;
 use raycourse::check::expected::Source;
 use raycourse::check::{Report, Verdict, check};

@@ -3,7 +3,6 @@
 //! renders by default (the course's functions) or with `[render] fast = true`; and
 //! the fast engine does take over where it can (four paths at a time in the rooms of
 //! diffuse spheres, its own hierarchy for the meshes).
-#![cfg(feature = "s3")]
 
 use std::num::NonZeroU32;
 

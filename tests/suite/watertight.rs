@@ -3,7 +3,6 @@
 //! rounding decides which of them the ray belongs to. The watertight test never
 //! lets such a ray through; the course's Moller-Trumbore test, which rounds the
 //! shared edge differently for each of its triangles, does: the counter-example.
-#![cfg(feature = "s6")]
 
 use raycourse::acceleration::Bvh;
 use raycourse::geometry::{Ray, TriangleTest};

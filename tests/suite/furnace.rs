@@ -2,7 +2,6 @@
 //! loses no energy is invisible. Every pixel must see exactly the enclosure's
 //! radiance, within the Monte Carlo noise. Then the bias of the bounce limit, and the
 //! unbiasedness of Russian roulette, measured against a closed form.
-#![cfg(feature = "s2")]
 
 use raycourse::Scene;
 use raycourse::camera::Camera;

@@ -5,7 +5,6 @@
 //! pooled; the statistic's p-value comes from the chi-square distribution, and the
 //! sampler is rejected below 1%. Each test has a twin with a deliberately wrong pdf,
 //! which must be rejected: a test that cannot fail proves nothing.
-#![cfg(all(feature = "s3", not(feature = "f32")))]
 
 use raycourse::maths::{PI, PixelRng, Real, pixel_rng, uniform};
 use statrs::distribution::{ChiSquared, ContinuousCDF};
