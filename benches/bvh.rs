@@ -11,7 +11,7 @@ use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, uniform};
 use raycourse::meshes::{Mesh, Placement, read_obj};
 
 fn ogre() -> Mesh {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/ogre/ogre.obj");
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/ogre/ogre.obj");
     let data = read_obj(&path).expect("the ogre asset loads");
     let placement = Placement {
         scale: 1.0,

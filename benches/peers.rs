@@ -9,7 +9,8 @@
 //! The hits the two libraries find are counted; they agree but where single
 //! precision (obvhs) and double precision (the crate) round a grazing ray apart.
 //!
-//! `cargo bench --bench peers` (or `RAYSETS=/tmp/raysets/ogre cargo bench --bench peers`).
+//! `cargo bench -p raycourse-benches --bench peers` (or with
+//! `RAYSETS=/tmp/raysets/ogre` before it).
 
 use std::hint::black_box;
 use std::path::{Path, PathBuf};
@@ -135,7 +136,7 @@ fn single(v: Vec3) -> Vec3A {
 }
 
 fn ogre() -> Mesh {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/ogre/ogre.obj");
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/ogre/ogre.obj");
     let data = read_obj(&path).expect("the ogre asset loads");
     let placement = Placement {
         scale: 1.0,

@@ -1,19 +1,22 @@
-//! `raycourse bench`: the stages at the course's settings, timed, beside the times
-//! the course reported on its own machine.
+//! `raycourse bench`: the stages at the course's settings, timed with the course's
+//! code and (from session 3) with the fast engine, beside the times the course
+//! reported on its own machine.
 
 use std::num::NonZeroUsize;
 
 use clap::{ArgMatches, FromArgMatches, Parser};
-use raycourse::{Overrides, stages};
+use raycourse::scene_file::SESSION;
+use raycourse::{Overrides, Scene, Stage, stages};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
 use crate::commands::options::RenderArgs;
-use crate::commands::output::timed_render;
+use crate::commands::output::{Timed, timed_render};
 
-/// Render the stages at the course's settings and print a table of their times
-/// beside the course's own (every stage of this build, or those of the sessions
-/// given).
+/// Render the stages at the course's settings and print a table of their times,
+/// by the course's code and (from session 3) by the fast engine, which must give
+/// the same image, beside the course's own times (every stage of this build, or
+/// those of the sessions given).
 #[derive(Parser)]
 #[command(name = "bench")]
 struct BenchArgs {
@@ -54,22 +57,59 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         quiet: true,
         ..RenderArgs::default()
     };
-    println!("| stage | settings | time | rays | Mrays/s | course |");
-    println!("|---|---|---|---|---|---|");
+    println!(
+        "| stage | settings | course's code | `--fast` | speed-up | rays | Mrays/s | course |"
+    );
+    println!("|---|---|---|---|---|---|---|---|");
     let chosen = |session: u32| args.sessions.is_empty() || args.sessions.contains(&session);
     for stage in stages().filter(|s| chosen(s.session)) {
         let scene = stage.scene(&Overrides::default())?;
-        let timed = timed_render(stage.name, &scene, &options)?;
-        println!(
-            "| `{}` ({}) | {} | {:.2} s | {} | {:.2} | {} |",
-            stage.name,
-            stage.figure.map_or("-".into(), |f| f.to_string()),
-            scene.summary(),
-            timed.seconds,
-            timed.result.rays,
-            timed.result.rays as f64 / timed.seconds / 1e6,
-            course_time(stage.figure)
-        );
+        let course = timed_render(stage.name, &scene, &options)?;
+        let fast = fast_render(stage, &options)?;
+        if let Some(fast) = &fast
+            && fast.result.film != course.result.film
+        {
+            return Err(Failure::Machine(format!(
+                "{}: the fast engine's image differs from the course's code's",
+                stage.name
+            )));
+        }
+        println!("{}", row(stage, &scene, &course, fast.as_ref()));
     }
     Ok(())
+}
+
+/// `stage` rendered by the fast engine, from session 3 (`None` before).
+fn fast_render(stage: &Stage, options: &RenderArgs) -> Result<Option<Timed>, Failure> {
+    if SESSION < 3 {
+        return Ok(None);
+    }
+    let fast = Overrides {
+        fast: true,
+        ..Overrides::default()
+    };
+    let scene = stage.scene(&fast)?;
+    timed_render(stage.name, &scene, options).map(Some)
+}
+
+/// The table's row of `stage`: its settings, its times by the course's code and the
+/// fast engine, its rays, and the course's time.
+fn row(stage: &Stage, scene: &Scene, course: &Timed, fast: Option<&Timed>) -> String {
+    let (time, speed_up) = match fast {
+        Some(f) => (
+            format!("{:.2} s", f.seconds),
+            format!("{:.2}x", course.seconds / f.seconds),
+        ),
+        None => ("-".into(), "-".into()),
+    };
+    format!(
+        "| `{}` ({}) | {} | {:.2} s | {time} | {speed_up} | {} | {:.2} | {} |",
+        stage.name,
+        stage.figure.map_or("-".into(), |f| f.to_string()),
+        scene.summary(),
+        course.seconds,
+        course.result.rays,
+        course.result.rays as f64 / course.seconds / 1e6,
+        course_time(stage.figure)
+    )
 }

@@ -65,6 +65,10 @@ struct ConvergeArgs {
     /// Worker threads (default: one per core).
     #[arg(long)]
     threads: Option<NonZeroUsize>,
+    /// Render with the fast engine, beyond the course: the same images, in less
+    /// time.
+    #[arg(long)]
+    fast: bool,
     /// Hide the progress bar.
     #[arg(long, short)]
     quiet: bool,
@@ -112,6 +116,7 @@ impl Study<'_> {
             height: self.args.height,
             samples: Some(samples),
             seed,
+            fast: self.args.fast,
             ..Overrides::default()
         };
         Ok((parse_scene(&text, path, &overrides)?, text))
@@ -151,6 +156,16 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         source: scene_source(&args.scene)?,
     };
     let (variants, reference_edits) = study.variants()?;
+    // Every variant's scene is read before the reference is rendered, so that a bad
+    // one is refused at once.
+    let scenes = variants
+        .iter()
+        .map(|v| {
+            study
+                .scene(v.edits.clone(), NonZeroU32::MIN, None)
+                .map(|s| s.0)
+        })
+        .collect::<Result<Vec<Scene>, Failure>>()?;
     let pool = thread_pool(args.threads)?;
     let ladder = sample_ladder(args.max_spp.get());
     let (truth, text) = study.scene(reference_edits, args.reference_spp, Some(REFERENCE_SEED))?;
@@ -163,8 +178,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
     );
     let reference = pool.install(|| reference(&args, &truth, &text, &bar))?;
     let mut rungs = vec![];
-    for variant in &variants {
-        let (scene, _) = study.scene(variant.edits.clone(), NonZeroU32::MIN, None)?;
+    for (variant, scene) in variants.iter().zip(scenes) {
         bar.set_message(variant.label.clone());
         let progress = |done| bar.inc(done);
         rungs.extend(pool.install(|| climb(&variant.label, scene, &ladder, &reference, &progress)));

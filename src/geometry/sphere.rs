@@ -148,7 +148,7 @@ mod tests {
     }
 
     /// Offsets of 1e-9 and 1e-6 at 10 are below single precision's resolution:
-    /// tests/extremes.rs compares the two precisions.
+    /// tests/suite/extremes.rs compares the two precisions.
     #[test]
     #[cfg(not(feature = "f32"))]
     fn tangent_and_near_tangent_rays() {

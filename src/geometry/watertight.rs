@@ -52,13 +52,19 @@ impl ShearedRay {
     /// `p` in the ray's frame, its `z` still unscaled (scaled only for a hit).
     #[inline]
     fn transform(&self, p: Vec3) -> Vec3 {
-        let [kx, ky, kz] = self.axes;
-        let q = p - self.origin;
-        Vec3::new(
-            q[kx] + self.shear.x * q[kz],
-            q[ky] + self.shear.y * q[kz],
-            q[kz],
-        )
+        let q = self.permute(p - self.origin);
+        Vec3::new(q.x + self.shear.x * q.z, q.y + self.shear.y * q.z, q.z)
+    }
+
+    /// `q`'s coordinates along the axes that become `x`, `y` and `z`: a rotation of
+    /// the three (`z` is the direction's largest axis, `x` and `y` the next two).
+    #[inline]
+    fn permute(&self, q: Vec3) -> Vec3 {
+        match self.axes[2] {
+            0 => Vec3::new(q.y, q.z, q.x),
+            1 => Vec3::new(q.z, q.x, q.y),
+            _ => q,
+        }
     }
     // ANCHOR_END: ray_space
 

@@ -1,13 +1,12 @@
 //! Helpers shared by the tests that run the `raycourse` command.
 
 use std::path::Path;
-use std::process::Output;
+use std::process::{Command, Output};
 
-use assert_cmd::cargo::cargo_bin_cmd;
-
-/// Runs `raycourse` with `args` in `dir` and returns what it printed and its status.
+/// Runs `raycourse` (the binary Cargo built for these tests) with `args` in `dir`
+/// and returns what it printed and its status.
 pub fn run<S: AsRef<std::ffi::OsStr>>(args: &[S], dir: &Path) -> Output {
-    cargo_bin_cmd!("raycourse")
+    Command::new(env!("CARGO_BIN_EXE_raycourse"))
         .args(args)
         .current_dir(dir)
         .output()

@@ -11,7 +11,7 @@ use raycourse::studies::convergence::{Rung, read_rungs};
 
 /// Runs a study in `dir` and returns its rows.
 fn study(dir: &Path, args: &[&str]) -> Vec<Rung> {
-    let mut all = vec!["converge", "-q", "--out", "study"];
+    let mut all = vec!["converge", "-q", "--fast", "--out", "study"];
     all.extend(args);
     let out = run(&all, dir);
     assert!(out.status.success(), "{}", text(&out.stderr));

@@ -3,7 +3,7 @@
 //! are random edits of valid files (deleted, repeated or replaced characters,
 //! numbers swapped for extreme ones), which reach far deeper into the parsers than
 //! random bytes do. `cargo test` tries a few thousand; `FUZZ_CASES=1000000 cargo test
-//! --release --test fuzz` runs a longer campaign.
+//! --release --test suite fuzz` runs a longer campaign.
 
 use std::path::Path;
 

@@ -33,21 +33,18 @@ pub fn write_view(root: &Path, session: u32, out: &Path) -> Result<(), String> {
     }
     copy_assets(root, out, session)?;
     copy_tests(root, out, session)?;
-    for (folder, kind) in [("benches", "bench"), ("examples", "example")] {
-        for file in rust_files(&root.join(folder))? {
-            let name = file
-                .file_stem()
-                .unwrap_or_default()
-                .to_string_lossy()
-                .into_owned();
-            if !dropped.contains(&name) {
-                prune_file(
-                    &file,
-                    &out.join(folder).join(file.file_name().unwrap()),
-                    session,
-                )?;
-            }
-            let _ = kind;
+    for file in rust_files(&root.join("examples"))? {
+        let name = file
+            .file_stem()
+            .unwrap_or_default()
+            .to_string_lossy()
+            .into_owned();
+        if !dropped.contains(&name) {
+            prune_file(
+                &file,
+                &out.join("examples").join(file.file_name().unwrap()),
+                session,
+            )?;
         }
     }
     write(&out.join("README.md"), &readme(session))
