@@ -97,7 +97,7 @@ fn load(path: &Path, bvh: BvhKind, leaf: u16) -> Result<Mesh, Failure> {
     let start = Instant::now();
     mesh.search = match bvh {
         BvhKind::Midpoint => Arc::new(Bvh::build(&mesh)) as Arc<dyn Search>,
-        BvhKind::Sah => Arc::new(Bvh::build_sah(&mesh, leaf.into(), 1)),
+        BvhKind::Sah => Arc::new(raycourse::fast::sah::build(&mesh, leaf.into(), 1)),
         BvhKind::Fast => Arc::new(FastBvh::build(&mesh, leaf)),
     };
     println!(

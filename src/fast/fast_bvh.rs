@@ -9,6 +9,7 @@ use arrayvec::ArrayVec;
 use glam::Vec4;
 
 use crate::acceleration::Bvh;
+use crate::fast::sah;
 use crate::fast::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
 use crate::geometry::{Ray, ShearedRay, TriangleTest};
 use crate::maths::{Real, Vec3, to_single};
@@ -238,10 +239,10 @@ impl Stack {
 
 impl FastBvh {
     /// The hierarchy of `mesh` built with the surface area heuristic
-    /// ([`Bvh::build_sah`]), leaves of at most `max_leaf` triangles, collapsed to
+    /// ([`sah::build`]), leaves of at most `max_leaf` triangles, collapsed to
     /// four children per node.
     pub fn build(mesh: &Mesh, max_leaf: u16) -> FastBvh {
-        let bvh = Bvh::build_sah(mesh, max_leaf.into(), GROUP);
+        let bvh = sah::build(mesh, max_leaf.into(), GROUP);
         let mut fast = FastBvh {
             nodes: vec![],
             groups: vec![],

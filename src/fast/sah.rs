@@ -29,67 +29,65 @@ struct Split {
     cost: Real,
 }
 
-impl Bvh {
-    // ANCHOR: sah
-    /// Builds the hierarchy of `mesh` with the surface area heuristic. A node is
-    /// split where the expected cost of a random ray through it is least:
-    /// `c_trav + (S_left K_left + S_right K_right) / S`, with `S` the box areas and
-    /// `K` the triangle counts, over 16 candidate planes per axis (the triangles'
-    /// centroids sorted into bins). It becomes a leaf when no split is cheaper than
-    /// testing its `K` triangles, if it holds at most `max_leaf` of them. Where a
-    /// traversal tests `block` triangles at once, `N` counts blocks, `ceil(N / block)`:
-    /// a leaf of four costs what a leaf of one does when four are tested together.
-    pub fn build_sah(mesh: &Mesh, max_leaf: usize, block: usize) -> Bvh {
-        let boxes: Vec<Aabb> = (0..mesh.triangles.len() as u32)
-            .map(|t| mesh.corners(t).into_iter().fold(Aabb::EMPTY, Aabb::grow))
-            .collect();
-        let centroids: Vec<Vec3> = boxes.iter().map(Aabb::centre).collect();
-        let mut bvh = Bvh {
-            nodes: Vec::with_capacity(2 * mesh.triangles.len()),
-            order: (0..mesh.triangles.len() as u32).collect(),
+// ANCHOR: sah
+/// Builds the hierarchy of `mesh` with the surface area heuristic. A node is
+/// split where the expected cost of a random ray through it is least:
+/// `c_trav + (S_left K_left + S_right K_right) / S`, with `S` the box areas and
+/// `K` the triangle counts, over 16 candidate planes per axis (the triangles'
+/// centroids sorted into bins). It becomes a leaf when no split is cheaper than
+/// testing its `K` triangles, if it holds at most `max_leaf` of them. Where a
+/// traversal tests `block` triangles at once, `K` counts blocks, `ceil(K / block)`:
+/// a leaf of four costs what a leaf of one does when four are tested together.
+pub fn build(mesh: &Mesh, max_leaf: usize, block: usize) -> Bvh {
+    let boxes: Vec<Aabb> = (0..mesh.triangles.len() as u32)
+        .map(|t| mesh.corners(t).into_iter().fold(Aabb::EMPTY, Aabb::grow))
+        .collect();
+    let centroids: Vec<Vec3> = boxes.iter().map(Aabb::centre).collect();
+    let mut bvh = Bvh {
+        nodes: Vec::with_capacity(2 * mesh.triangles.len()),
+        order: (0..mesh.triangles.len() as u32).collect(),
+    };
+    let root = bounds_of(&bvh.order, &boxes);
+    bvh.nodes.push(Node {
+        bounds: root,
+        first: 0,
+        count: mesh.triangles.len() as u32,
+    });
+    let mut pending = vec![0];
+    while let Some(index) = pending.pop() {
+        let Node {
+            bounds,
+            first,
+            count,
+        } = bvh.nodes[index];
+        let range = first as usize..(first + count) as usize;
+        let items = &mut bvh.order[range];
+        let Some(left) = sah_partition(items, &bounds, (&boxes, &centroids), (max_leaf, block))
+        else {
+            continue;
         };
-        let root = bounds_of(&bvh.order, &boxes);
-        bvh.nodes.push(Node {
-            bounds: root,
-            first: 0,
-            count: mesh.triangles.len() as u32,
-        });
-        let mut pending = vec![0];
-        while let Some(index) = pending.pop() {
-            let Node {
+        let children = bvh.nodes.len() as u32;
+        for (start, size) in [
+            (first as usize, left),
+            (first as usize + left, count as usize - left),
+        ] {
+            let bounds = bounds_of(&bvh.order[start..start + size], &boxes);
+            bvh.nodes.push(Node {
                 bounds,
-                first,
-                count,
-            } = bvh.nodes[index];
-            let range = first as usize..(first + count) as usize;
-            let items = &mut bvh.order[range];
-            let Some(left) = sah_partition(items, &bounds, (&boxes, &centroids), (max_leaf, block))
-            else {
-                continue;
-            };
-            let children = bvh.nodes.len() as u32;
-            for (start, size) in [
-                (first as usize, left),
-                (first as usize + left, count as usize - left),
-            ] {
-                let bounds = bounds_of(&bvh.order[start..start + size], &boxes);
-                bvh.nodes.push(Node {
-                    bounds,
-                    first: start as u32,
-                    count: size as u32,
-                });
-            }
-            bvh.nodes[index] = Node {
-                bounds,
-                first: children,
-                count: 0,
-            };
-            pending.extend([children as usize, children as usize + 1]);
+                first: start as u32,
+                count: size as u32,
+            });
         }
-        bvh
+        bvh.nodes[index] = Node {
+            bounds,
+            first: children,
+            count: 0,
+        };
+        pending.extend([children as usize, children as usize + 1]);
     }
-    // ANCHOR_END: sah
+    bvh
 }
+// ANCHOR_END: sah
 
 /// Splits the node holding `items` (inside `bounds`) by the surface area heuristic:
 /// moves the triangles of the left child to the front of `items` and returns how

@@ -120,7 +120,7 @@ fn searches_agree(obj: &str, count: u64) {
         let bvh = hits(&mesh, &rays);
         let differing = bvh.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "BVH differs from brute force");
-        mesh.search = Arc::new(raycourse::acceleration::Bvh::build_sah(&mesh, 8, 1));
+        mesh.search = Arc::new(raycourse::fast::sah::build(&mesh, 8, 1));
         let sah = hits(&mesh, &rays);
         let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "SAH BVH differs from brute force");
