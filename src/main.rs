@@ -2,6 +2,8 @@
 //! file, and the studies of later sessions. Each command is a file of
 //! `src/commands/`; this file builds the command line and dispatches.
 
+#![deny(unsafe_code)]
+
 mod commands;
 
 use std::process::ExitCode;
