@@ -6,6 +6,7 @@ use rand::{RngExt, SeedableRng};
 
 use crate::maths::Real;
 
+// ANCHOR: pixel_rng
 /// The random numbers of one pixel.
 #[derive(Debug)]
 pub enum PixelRng {
@@ -16,22 +17,6 @@ pub enum PixelRng {
     Spread(Box<dyn SpreadNumbers>),
 }
 
-/// A sampler beyond the course: numbers for each decision of a path, spread evenly
-/// over the samples of a pixel. Every sample starts with
-/// [`start_sample`](SpreadNumbers::start_sample); each random decision of its path
-/// (where in the pixel, where on the lens, which light direction, which bounce
-/// direction, whether the path goes on) then takes the next dimension, one number or
-/// a pair.
-pub trait SpreadNumbers: std::fmt::Debug + Send {
-    /// Starts sample number `sample` of the pixel at its first dimension.
-    fn start_sample(&mut self, sample: u32);
-    /// A number of `[0, 1)` for a one-dimensional decision.
-    fn number(&mut self) -> Real;
-    /// A point of `[0, 1)^2` for a two-dimensional decision.
-    fn pair(&mut self) -> (Real, Real);
-}
-
-// ANCHOR: pixel_rng
 /// The independent random numbers of pixel number `pixel` (row-major from the
 /// top-left) for the scene seed `seed`. Their stream depends on nothing else, so
 /// whichever thread renders the pixel draws the same numbers.
@@ -68,6 +53,21 @@ pub fn uniform_pair(rng: &mut PixelRng) -> (Real, Real) {
     }
 }
 // ANCHOR_END: uniform
+
+/// A sampler beyond the course: numbers for each decision of a path, spread evenly
+/// over the samples of a pixel. Every sample starts with
+/// [`start_sample`](SpreadNumbers::start_sample); each random decision of its path
+/// (where in the pixel, where on the lens, which light direction, which bounce
+/// direction, whether the path goes on) then takes the next dimension, one number or
+/// a pair.
+pub trait SpreadNumbers: std::fmt::Debug + Send {
+    /// Starts sample number `sample` of the pixel at its first dimension.
+    fn start_sample(&mut self, sample: u32);
+    /// A number of `[0, 1)` for a one-dimensional decision.
+    fn number(&mut self) -> Real;
+    /// A point of `[0, 1)^2` for a two-dimensional decision.
+    fn pair(&mut self) -> (Real, Real);
+}
 
 /// SplitMix64's finaliser: a bijection of `u64` that scatters nearby inputs.
 fn splitmix64(x: u64) -> u64 {
