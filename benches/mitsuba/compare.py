@@ -1,13 +1,13 @@
 #!/usr/bin/env python3
 """The course's sphere stages in Mitsuba 3 and in raycourse, at the same size,
 samples and depth: checks that the images agree (region means within a few percent)
-and times both.
+and times both; raycourse renders with its fast engine (`--fast`).
 
     python3 benches/mitsuba/compare.py                       # indirect, light-sampling
     python3 benches/mitsuba/compare.py depth-of-field --size 128 --spp 200 --threads 2
 
 Installs what it needs into target/mitsuba-venv (PyPI `mitsuba`, `numpy`). Mitsuba
-renders with `scalar_rgb` (one path at a time, like raycourse) and, where LLVM is
+renders with `scalar_rgb` (one path at a time, like the course's code) and, where LLVM is
 found (Debian's `libllvm19`, or `DRJIT_LIBLLVM_PATH`), with `llvm_ad_rgb` (eight or
 sixteen paths per instruction). Both use its path tracer with `max_depth` =
 bounces + 2 (Mitsuba counts the camera ray and the light's emission as depths) and
@@ -137,7 +137,7 @@ def raycourse_image(stage, args):
     out = ROOT / "target" / f"mitsuba-{stage}.png"
     command = [str(binary), "render", str(ROOT / "sessions" / STAGES[stage] / f"{stage}.toml"),
                "--width", str(args.size), "--height", str(args.size), "--spp", str(args.spp),
-               "--threads", str(args.threads), "--quiet", "--out", str(out)]
+               "--threads", str(args.threads), "--quiet", "--fast", "--out", str(out)]
     start = time.perf_counter()
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     seconds = time.perf_counter() - start
