@@ -42,7 +42,7 @@
 //! | `engines` | beyond the course: which engine renders a scene | 3 |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
 //! | `studies` | error against samples and time, scale sweeps, ray sets | 3, 6 |
-//! | `check` | a student's image against the stage's, and the likely mistake | 7 |
+//! | [`check`] | an image against the stage's: the comparison (1), a student's image graded with the likely mistake (7) | 1, 7 |
 //!
 //! A program starts with a [`Stage`] (or a scene file, [`load_scene`]), renders its
 //! [`Scene`] with [`render()`] (the course's code, or from session 3 the engine the
@@ -97,7 +97,6 @@ pub mod scene_file;
 #[cfg(feature = "s3")]
 pub mod studies;
 
-#[cfg(feature = "s7")]
 pub mod check;
 
 #[cfg(feature = "s3")]

@@ -37,6 +37,8 @@ impl Bvh {
     /// the middle of its longest side, its triangles go to the side of their
     /// centroid, and splitting stops at [`LEAF_SIZE`] triangles or when every
     /// centroid falls on one side.
+    ///
+    /// Exercise s6.1, building the BVH: book session 6, "BVH".
     pub fn build(mesh: &Mesh) -> Bvh {
         let centroids: Vec<Vec3> = (0..mesh.triangles.len() as u32)
             .map(|i| mesh.corners(i).iter().sum::<Vec3>() / 3.0)
@@ -103,6 +105,8 @@ impl Search for Bvh {
     /// nodes still to visit. Of two children, the one
     /// the ray enters first is visited first, and a node whose box the ray enters
     /// beyond the nearest hit found so far is skipped.
+    ///
+    /// Exercise s6.2, walking the BVH: book session 6, "BVH".
     fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let inv = ray.direction.recip();
         let sheared = ShearedRay::new(ray);

@@ -38,6 +38,8 @@ impl Orientation {
 /// `forward = normalize(target - eye)`, `right = normalize(forward x up)`,
 /// `up' = right x forward`, and camera-space `z` is `back = -forward`. `None` if
 /// the camera looks along `up` or at its own position.
+///
+/// Exercise s7.2, the camera's orientation: book session 7, "The camera".
 pub fn aim(eye: Vec3, target: Vec3, up: Vec3, plunge: Real) -> Option<(Vec3, Orientation)> {
     let offset = eye - target;
     let axis = offset.cross(up).try_normalize()?;

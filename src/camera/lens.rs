@@ -6,6 +6,8 @@ use crate::maths::{PI, PixelRng, Real, Vec3, uniform_pair};
 /// A point of the unit disk, uniformly distributed, from two uniform numbers in
 /// `[0, 1)`: Shirley and Chiu's concentric map, which sends squares around the
 /// centre of `[-1, 1]^2` to circles and so keeps neighbouring samples neighbours.
+///
+/// Exercise s4.3, a point of the lens: book session 4, "Depth of field".
 pub fn sample_disk(u1: Real, u2: Real) -> (Real, Real) {
     let (a, b) = (2.0 * u1 - 1.0, 2.0 * u2 - 1.0);
     if a == 0.0 && b == 0.0 {
@@ -62,6 +64,8 @@ impl ThinLens {
     /// `focus` in front of the eye, at a point every ray through the lens passes
     /// through, so that plane is sharp; the ray starts at a random point of the
     /// aperture disk around the eye.
+    ///
+    /// Exercise s4.4, the thin lens: book session 4, "Depth of field".
     pub fn refocus(&self, start: Vec3, direction: Vec3, rng: &mut PixelRng) -> (Vec3, Vec3) {
         let focus_point = start + direction * (self.focus / -direction.z);
         let (u1, u2) = uniform_pair(rng);

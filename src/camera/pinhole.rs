@@ -58,6 +58,8 @@ impl Camera {
     /// from the bottom, as in the course:
     /// `(j - W/2 + 0.5, i - H/2 + 0.5, -H / (2 tan(alpha/2)))`.
     /// The image plane sits at the distance where `H` pixels span the field of view.
+    ///
+    /// Exercise s1.1, the camera ray through a pixel: book session 1, "A white disk".
     pub fn pixel_direction(&self, row: u32, column: u32) -> Vec3 {
         let (w, h) = (self.width as Real, self.height as Real);
         let i = (self.height - 1 - row) as Real;

@@ -1,6 +1,8 @@
-//! Checking a student's image of a stage (beyond the course's sessions, with the
-//! whole crate): is it the stage's image, and if not, what differs, where, and which
-//! classic mistake explains it.
+//! Checking a student's image of a stage: is it the stage's image, and if not, what
+//! differs, where, and which classic mistake explains it. The comparison serves
+//! every session (the exercises' checklist compares each stage with its reference
+//! image); the `check` command, which grades images made elsewhere, comes with the
+//! whole crate (session 7).
 //!
 //! | file | what it holds |
 //! |---|---|
@@ -11,9 +13,11 @@
 //! | [`report`] | the verdict, the figures behind it and the hint |
 
 pub mod compare;
+#[cfg(feature = "s7")]
 pub mod expected;
+#[cfg(feature = "s7")]
 pub mod mistakes;
+#[cfg(feature = "s7")]
 pub mod regions;
+#[cfg(feature = "s7")]
 pub mod report;
-
-pub use report::{Report, Verdict, check};

@@ -10,7 +10,7 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 use image::RgbImage;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::check::expected::Source;
-use raycourse::check::{Report, Verdict, check};
+use raycourse::check::report::{Report, Verdict, check};
 use raycourse::{Stage, stages};
 
 use crate::commands::Verb;

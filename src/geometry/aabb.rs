@@ -75,6 +75,8 @@ impl Aabb {
     /// face. The exit distance is widened by `1 + 2 delta_3` (pbrt-v4) so that
     /// rounding never misses a box that a triangle hit inside it proves the ray
     /// reaches.
+    ///
+    /// Exercise s5.2, the slab test: book session 5, "The bounding box".
     #[inline]
     pub fn entry(&self, ray: &Ray, inv_direction: Vec3, t_max: Real) -> Option<Real> {
         let (mut near, mut far) = (0.0, t_max);

@@ -11,6 +11,8 @@ impl Hit {
     /// float away. The course pushes it by a fixed `epsilon` along the normal (see
     /// [`Hit::spawn_with_epsilon`]); an offset that follows the point's own error
     /// is never too small for a large scene nor too large for a small one.
+    ///
+    /// Exercise s2.2, the offset origin of a new ray: book session 2, "Shadows".
     pub fn spawn(&self, direction: Vec3) -> Ray {
         let offset = if direction.dot(self.offset) < 0.0 {
             -self.offset
@@ -47,6 +49,8 @@ impl Hit {
 
     /// A ray from the hit point towards `target`, with the distance to the target
     /// measured from the ray's (offset) origin; used for shadow rays.
+    ///
+    /// Exercise s2.3, the shadow ray towards the light: book session 2, "Shadows".
     pub fn spawn_towards(&self, target: Vec3) -> (Ray, Real) {
         let ray = self.spawn((target - self.point).normalize());
         (ray, ray.origin.distance(target))

@@ -53,6 +53,8 @@ impl Sphere {
     /// The roots then come from `mu = -(s.d + sign(s.d) sqrt(discriminant))` as
     /// `(|s|^2 - R^2) / mu` and `mu`, so the smaller one is not computed as a
     /// difference of nearly equal numbers either.
+    ///
+    /// Exercise s1.2, the ray-sphere distance: book session 1, "A white disk".
     #[inline]
     pub fn intersect(&self, ray: &Ray) -> Option<Real> {
         let s = ray.origin - self.centre;

@@ -39,6 +39,8 @@ pub enum TriangleTest {
 /// `b_C = d . q / det`, `t = e2 . q / det`. The point is inside when `b_B >= 0`,
 /// `b_C >= 0` and `b_B + b_C <= 1`. A ray parallel to the plane has `det = 0` and
 /// misses. (The hit calls `b_B` and `b_C` `beta` and `gamma`.)
+///
+/// Exercise s5.1, the ray-triangle test: book session 5, "A mesh".
 #[inline]
 pub fn intersect_triangle(
     ray: &Ray,

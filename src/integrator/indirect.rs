@@ -13,6 +13,8 @@ impl Tracer<'_> {
     /// estimated with one direction drawn with density `cos(theta) / pi`. The cosine
     /// and the `pi` cancel, leaving `albedo L(w)`. Session 4 changes one thing: with
     /// light sampling, the sampled light's own glow is not counted again.
+    ///
+    /// Exercise s3.3, the indirect bounce: book session 3, "Indirect lighting".
     pub fn indirect_light(&mut self, hit: &Hit, albedo: Colour, bounces: u32) -> Colour {
         self.bounce(bounces, |tracer, next| {
             let direction = tracer.cosine_direction(hit);

@@ -33,6 +33,8 @@ impl PointLight {
     /// and `l` the unit direction towards it. `Phi / (4 pi r^2)` is the power per unit
     /// area arriving at distance `r`, `N . l` spreads it over the tilted surface,
     /// `albedo / pi` is the BRDF.
+    ///
+    /// Exercise s1.4, Lambert shading with the light's falloff: book session 1, "Lambert shading".
     pub fn lambert(&self, point: Vec3, normal: Vec3, albedo: Colour) -> Colour {
         let to_light = self.position - point;
         let d2 = to_light.length_squared();

@@ -47,6 +47,8 @@ impl Cone {
     /// `1 - cos(theta) = xi1 (1 - cos_max)`, `phi = 2 pi xi2` (`xi1 = u1`, `xi2 = u2`;
     /// `theta` measured from the cone's axis, towards the light), and
     /// `sin^2(theta) = (1 - cos)(1 + cos)`, again without cancellation.
+    ///
+    /// Exercise s4.1, a direction in the light's cone: book session 4, "Light sampling".
     pub fn sample(&self, u1: Real, u2: Real) -> Vec3 {
         let one_minus_cos = u1 * self.one_minus_cos_max;
         let sin_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
@@ -60,6 +62,8 @@ impl Cone {
 
     /// Density of [`Cone::sample`] per unit solid angle: one over the cone's solid
     /// angle, `1 / (2 pi (1 - cos_max))`, inside the cone.
+    ///
+    /// Exercise s4.2, the cone's density: book session 4, "Light sampling".
     pub fn pdf(&self, cos_theta: Real) -> Real {
         if cos_theta >= self.cos_max {
             1.0 / (2.0 * PI * self.one_minus_cos_max)

@@ -6,6 +6,8 @@ use crate::maths::{Real, Vec3};
 // ANCHOR: reflect
 /// The mirror direction of `incident` about the unit `normal`: `d - 2 (d . n) n`.
 /// The angle to the normal is kept and the tangential part is unchanged.
+///
+/// Exercise s2.4, the mirror direction: book session 2, "Mirrors".
 pub fn reflect(incident: Vec3, normal: Vec3) -> Vec3 {
     incident - 2.0 * incident.dot(normal) * normal
 }
@@ -20,6 +22,8 @@ pub fn reflect(incident: Vec3, normal: Vec3) -> Vec3 {
 /// `-sqrt(1 - eta^2 |d_par|^2) N`. `sin^2(theta_1)` is taken as `|d_par|^2` rather
 /// than `1 - cos^2(theta_1)`, which cancels near normal incidence. `None` when the
 /// square root's argument is negative: total internal reflection.
+///
+/// Exercise s2.5, refraction and total internal reflection: book session 2, "Glass".
 pub fn refract(incident: Vec3, normal: Vec3, eta: Real) -> Option<Vec3> {
     let parallel = incident - incident.dot(normal) * normal;
     let sin2_t = eta * eta * parallel.length_squared();

@@ -65,6 +65,8 @@ impl Texture {
     /// The albedo at texture coordinates `(u, v)`: `u` runs left to right, `v`
     /// bottom to top, and the texture repeats outside `[0, 1]`. The point falls at
     /// `x = u W`, `y = (1 - v) H` in texels. A NaN coordinate reads texel 0.
+    ///
+    /// Exercise s7.1, the texture lookup: book session 7, "Textures".
     pub fn colour(&self, [u, v]: [Real; 2]) -> Colour {
         let x = u * self.width as Real;
         let y = (1.0 - v) * self.height as Real;

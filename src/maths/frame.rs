@@ -19,6 +19,8 @@ impl Frame {
     /// A frame whose `z` axis is the unit vector `n`, built without branches on the
     /// normal's direction (Duff et al., "Building an Orthonormal Basis, Revisited",
     /// JCGT 2017), so it is continuous and exact to rounding for every `n`.
+    ///
+    /// Exercise s3.2, the frame around the normal: book session 3, "Indirect lighting".
     pub fn new(n: Vec3) -> Self {
         let sign = (1.0 as Real).copysign(n.z);
         let a = -1.0 / (sign + n.z);

@@ -8,6 +8,8 @@ use crate::maths::{PI, Real, Vec3};
 /// `cos(theta)`, from two uniform numbers in `[0, 1)`, as in the course:
 /// `x = cos(2 pi xi1) sqrt(1 - xi2)`, `y = sin(2 pi xi1) sqrt(1 - xi2)`,
 /// `z = sqrt(xi2)`, with `xi1`, `xi2` the two uniform numbers `u1`, `u2`.
+///
+/// Exercise s3.1, the cosine-weighted direction: book session 3, "Indirect lighting".
 pub fn sample_cosine_hemisphere(u1: Real, u2: Real) -> Vec3 {
     let r = (1.0 - u2).sqrt();
     let phi = 2.0 * PI * u1;
@@ -26,6 +28,8 @@ pub fn cosine_hemisphere_pdf(cos_theta: Real) -> Real {
 /// numbers `xi1 = u1`, `xi2 = u2` in `[0, 1)` (Box-Muller): radius
 /// `sigma sqrt(-2 ln(1 - xi1))`, angle `2 pi xi2`. `1 - xi1` lies in `(0, 1]`, so
 /// the logarithm is never taken of 0.
+///
+/// Exercise s3.4, the Gaussian pixel filter: book session 3, "Antialiasing".
 pub fn sample_gaussian(u1: Real, u2: Real, sigma: Real) -> (Real, Real) {
     let r = sigma * (-2.0 * (1.0 - u1).ln()).sqrt();
     let phi = 2.0 * PI * u2;

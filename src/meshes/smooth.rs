@@ -11,6 +11,8 @@ impl Mesh {
     /// back to the `geometric` normal if the mesh has no normals (a flat-shaded mesh
     /// has its normals removed when it is loaded) or they cancel, and is turned to
     /// the geometric normal's side.
+    ///
+    /// Exercise s6.3, the interpolated normal: book session 6, "Smooth normals".
     pub fn smooth_normal(&self, triangle: u32, weights: [Real; 3], geometric: Vec3) -> Vec3 {
         if self.normals.is_empty() {
             return geometric;

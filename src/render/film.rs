@@ -17,6 +17,8 @@ pub struct Film {
 /// The 8-bit value of one linear radiance channel. As in the course, radiance is on
 /// the display's scale: `min(255, L^(1/gamma))`, rounded, with 255 full white.
 /// Negative and NaN values show as 0.
+///
+/// Exercise s2.1, gamma: book session 2, "Gamma correction".
 pub fn display(radiance: Real, gamma: Real) -> u8 {
     let v = radiance.max(0.0).powf(1.0 / gamma).min(255.0);
     if v.is_nan() { 0 } else { v.round() as u8 }

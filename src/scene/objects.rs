@@ -77,6 +77,8 @@ impl Scene {
     /// The distance to the nearest sphere that `ray` hits and that sphere's index:
     /// every sphere is tested and the smallest positive distance wins, the first
     /// sphere on a tie.
+    ///
+    /// Exercise s1.3, the nearest hit: book session 1, "Several spheres".
     pub fn nearest_sphere(&self, ray: &Ray) -> Option<(Real, usize)> {
         let mut nearest: Option<(Real, usize)> = None;
         for (i, sphere) in self.spheres.iter().enumerate() {

@@ -49,10 +49,7 @@ pub enum SceneError {
         message: String,
     },
     /// The scene asks for something that a later course session brings.
-    #[error(
-        "{}: key `{key}`: {what} needs feature {feature}: cargo run --features {feature} -- ...",
-        path.display()
-    )]
+    #[error("{}: key `{key}`: {what} {remedy}", path.display())]
     NeedsFeature {
         /// The scene file.
         path: PathBuf,
@@ -60,8 +57,9 @@ pub enum SceneError {
         key: String,
         /// What the scene asked for.
         what: String,
-        /// The Cargo feature that brings it.
-        feature: String,
+        /// Which session brings it, and how to get it
+        /// ([`comes_with`](crate::scene_file::features::comes_with)).
+        remedy: String,
     },
 }
 

@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use crate::scene_file::SceneError;
-use crate::scene_file::features::{SESSION, feature_name};
+use crate::scene_file::features::{SESSION, comes_with};
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
 
 /// The materials of later sessions, by their name in a scene file: the session that
@@ -24,7 +24,7 @@ pub fn require(path: &Path, key: &str, session: u32, what: &str) -> Result<(), S
             path: path.to_owned(),
             key: key.to_owned(),
             what: what.to_owned(),
-            feature: feature_name(session),
+            remedy: comes_with(session),
         })
     }
 }

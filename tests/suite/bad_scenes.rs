@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use raycourse::scene_file::SESSION;
+use raycourse::scene_file::features::comes_with;
 use raycourse::{Overrides, SceneError, load_scene, parse_scene};
 
 const GOOD: &str = r#"
@@ -176,8 +177,7 @@ fn later_session_materials_name_their_feature() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            "room.toml: key `spheres[0].material`: a mirror material needs feature s2: \
-             cargo run --features s2 -- ..."
+            format!("room.toml: key `spheres[0].material`: a mirror material {}", comes_with(2))
         );
     }
 }
@@ -191,8 +191,7 @@ fn later_session_settings_name_their_feature() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            "room.toml: key `render.shadows`: shadow rays needs feature s2: \
-             cargo run --features s2 -- ..."
+            format!("room.toml: key `render.shadows`: shadow rays {}", comes_with(2))
         );
     }
 }
@@ -204,9 +203,9 @@ fn light_sampling_needs_a_sphere_light() {
     let expected = if SESSION >= 4 {
         "room.toml: key `render.light_sampling`: light sampling needs a sphere light: give \
          [light] a radius"
+            .to_owned()
     } else {
-        "room.toml: key `render.light_sampling`: light sampling needs feature s4: \
-         cargo run --features s4 -- ..."
+        format!("room.toml: key `render.light_sampling`: light sampling {}", comes_with(4))
     };
     assert_eq!(err.to_string(), expected);
 }
@@ -231,8 +230,7 @@ fn a_sphere_light_needs_session_four_and_no_shadow_rays() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            "room.toml: key `light.radius`: a sphere light needs feature s4: \
-             cargo run --features s4 -- ..."
+            format!("room.toml: key `light.radius`: a sphere light {}", comes_with(4))
         );
     }
 }
@@ -246,8 +244,7 @@ fn antialiasing_needs_session_three() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            "room.toml: key `camera.antialiasing`: antialiasing needs feature s3: \
-             cargo run --features s3 -- ..."
+            format!("room.toml: key `camera.antialiasing`: antialiasing {}", comes_with(3))
         );
     }
 }
@@ -298,8 +295,7 @@ fn samplers_are_named_and_noise_is_positive() {
     } else {
         assert_eq!(
             sobol.unwrap_err().to_string(),
-            "room.toml: key `render.sampler`: a choice of sampler needs feature s3: \
-             cargo run --features s3 -- ..."
+            format!("room.toml: key `render.sampler`: a choice of sampler {}", comes_with(3))
         );
     }
 }

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use crate::common::{run, text};
 use image::RgbImage;
 use raycourse::check::expected::Source;
-use raycourse::check::{Report, Verdict, check};
+use raycourse::check::report::{Report, Verdict, check};
 use raycourse::geometry::Ray;
 use raycourse::integrator::Tracer;
 use raycourse::lights::Light;

@@ -249,8 +249,10 @@ fn a_missing_or_broken_texture_is_named() {
 fn textures_need_session_seven() {
     assert_eq!(
         scene_error("obj = \"t.obj\"\ntextured = true", &[("t.obj", TRIANGLE)]),
-        "DIR/scene.toml: key `meshes[0].textured`: textures needs feature s7: cargo run \
-         --features s7 -- ..."
+        format!(
+            "DIR/scene.toml: key `meshes[0].textured`: textures {}",
+            raycourse::scene_file::features::comes_with(7)
+        )
     );
 }
 

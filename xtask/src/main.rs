@@ -2,14 +2,20 @@
 //!
 //! - `cargo xtask view sN DIR`: the crate as it stands after session N, in `DIR`;
 //! - `cargo xtask views DIR`: the views of all seven sessions, in `DIR/s1` ... `DIR/s7`;
+//! - `cargo xtask exercise sN DIR`: session N's exercise crate, the view with the
+//!   session's exercises to write (`--only sN.K`: one of them; `--switch`: every
+//!   exercise of the build kept, stubbed while `RAYCOURSE_STUB` names it, for CI);
+//! - `cargo xtask exercises`: every exercise, its function, file and test;
 //! - `cargo xtask mdbook-listings`: the book's preprocessor that takes each session
 //!   chapter's listings from that session's view (mdBook runs it).
 
 mod cfg;
+mod exercise;
 mod listings;
 mod manifest;
 mod prune;
 mod source;
+mod student;
 mod view;
 
 use std::path::{Path, PathBuf};
@@ -32,8 +38,9 @@ fn session(text: &str) -> Result<u32, String> {
 }
 
 fn run(args: &[String]) -> Result<(), String> {
-    let usage =
-        "usage: cargo xtask view sN DIR | cargo xtask views DIR | cargo xtask mdbook-listings";
+    let usage = "usage: cargo xtask view sN DIR | cargo xtask views DIR | \
+                 cargo xtask exercise sN DIR [--only sN.K] [--switch] | cargo xtask exercises | \
+                 cargo xtask mdbook-listings";
     match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["view", n, dir] => {
             let n = session(n)?;
@@ -43,10 +50,38 @@ fn run(args: &[String]) -> Result<(), String> {
         }
         ["views", dir] => (1..=7)
             .try_for_each(|n| view::write_view(&root(), n, &Path::new(dir).join(format!("s{n}")))),
+        ["exercise", n, dir, ref more @ ..] => exercise(session(n)?, Path::new(dir), more),
+        ["exercises"] => {
+            for (marker, file) in exercise::all(&root())? {
+                println!("{}\t{}\t{}\t{}", marker.id, marker.function, file, marker.test_name());
+            }
+            Ok(())
+        }
         ["mdbook-listings", "supports", _] => Ok(()),
         ["mdbook-listings"] => listings::preprocess(&root()),
         _ => Err(usage.into()),
     }
+}
+
+/// `cargo xtask exercise sN DIR [--only sN.K] [--switch]`.
+fn exercise(session: u32, dir: &Path, more: &[&str]) -> Result<(), String> {
+    let only = match more.iter().position(|a| *a == "--only") {
+        Some(i) => Some(*more.get(i + 1).ok_or("--only needs an exercise, such as s3.2")?),
+        None => None,
+    };
+    let how = if more.contains(&"--switch") {
+        exercise::Stub::Switch
+    } else {
+        exercise::Stub::Todo
+    };
+    let choice = student::Choice { session, only, how };
+    let stubbed = student::write_exercises(&root(), &choice, dir)?;
+    println!("session {session}'s exercises -> {}", dir.display());
+    for marker in &stubbed {
+        println!("  {} {} ({})", marker.id, marker.title, marker.function);
+    }
+    println!("next: cd {} && cargo test", dir.display());
+    Ok(())
 }
 
 fn main() -> ExitCode {

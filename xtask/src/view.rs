@@ -132,9 +132,9 @@ fn copy_assets(root: &Path, out: &Path, session: u32) -> Result<(), String> {
     Ok(())
 }
 
-/// Copies the tests that apply to the view: the snapshot test and the suite's
-/// modules pruned (a module of a later session left out), the bad inputs of sessions
-/// 1..N, the snapshots of their stages.
+/// Copies the tests that apply to the view: the snapshot test, the suite's and the
+/// exercises' modules pruned (a module of a later session left out), the bad inputs
+/// of sessions 1..N, the snapshots and reference images of their stages.
 fn copy_tests(root: &Path, out: &Path, session: u32) -> Result<(), String> {
     let tests = root.join("tests");
     for file in rust_files(&tests)? {
@@ -158,6 +158,7 @@ fn copy_tests(root: &Path, out: &Path, session: u32) -> Result<(), String> {
     let stages: Vec<String> = (1..=session)
         .flat_map(|n| rust_like(&root.join(format!("sessions/s{n}")), "toml"))
         .collect();
+    module_tree(&tests.join("exercises/main.rs"), root, out, session)?;
     for stage in stages {
         for suffix in [".snap", ".snap.png"] {
             let name = format!("stages__{stage}{suffix}");
@@ -166,6 +167,8 @@ fn copy_tests(root: &Path, out: &Path, session: u32) -> Result<(), String> {
                 &out.join("tests/snapshots").join(&name),
             )?;
         }
+        let reference = format!("exercises/references/{stage}.png");
+        copy(&tests.join(&reference), &out.join("tests").join(&reference))?;
     }
     Ok(())
 }

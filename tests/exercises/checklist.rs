@@ -1,0 +1,252 @@
+//! Running the checklist: each line `name ... ok` or `FAILED` with the reason, an
+//! exercise whose check stops at an earlier exercise's stub told so, and a closing
+//! line that says how far the session is.
+
+use std::collections::HashMap;
+use std::panic::{self, AssertUnwindSafe};
+use std::process::ExitCode;
+use std::sync::Mutex;
+
+use raycourse::stages;
+
+use crate::images;
+use crate::known::Outcome;
+
+/// One exercise, as the checklist runs it.
+pub struct Exercise {
+    /// Its number, such as `s1.2`: the marker in the doc comment of its function
+    /// gives the same number, what it computes and the book's section.
+    pub id: &'static str,
+    /// Its line in the checklist: the number and the function, such as
+    /// `s1_2_sphere_intersect`.
+    pub name: &'static str,
+    /// The exercises of its session whose functions its check calls besides its own.
+    pub needs: &'static [&'static str],
+    /// The check: known answers.
+    pub check: fn() -> Outcome,
+}
+
+/// An exercise's marker, read from the source: `/// Exercise s1.2, what: book ...`.
+struct Marker {
+    /// What it computes.
+    title: String,
+    /// Where the book teaches it.
+    book: String,
+}
+
+/// A line's verdict.
+#[derive(Clone, PartialEq)]
+enum Verdict {
+    Passed,
+    /// Wrong, with what went wrong.
+    Failed(String),
+    /// Stopped at the stub of this exercise (its own or an earlier one).
+    Stub(String),
+}
+
+/// Runs the exercises of `sessions` and their stages' images whose names contain
+/// one of `filters` (all when there is none); success when every line passed.
+pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
+    quiet_panics();
+    let markers = markers();
+    let chosen = |name: &str| filters.is_empty() || filters.iter().any(|f| name.contains(f));
+    let mut verdicts: HashMap<&str, Verdict> = HashMap::new();
+    let (mut passed, mut failed) = (0, 0);
+    let current = sessions.len() as u32;
+    let mut next: Option<String> = None;
+    let mut done = 0;
+    for (index, exercises) in sessions.iter().enumerate() {
+        let session = index as u32 + 1;
+        for exercise in exercises.iter().filter(|e| chosen(e.name)) {
+            let verdict = attempt(exercise.check);
+            let ok = verdict == Verdict::Passed;
+            report(exercise.name, &verdict, Some(exercise), &markers, &verdicts);
+            if session == current {
+                if ok {
+                    done += 1;
+                } else if next.is_none() {
+                    next = Some(describe(exercise.id, &markers));
+                }
+            }
+            if ok { passed += 1 } else { failed += 1 }
+            verdicts.insert(exercise.id, verdict);
+        }
+        for stage in stages().filter(|s| s.session == session) {
+            let name = images::check_name(stage);
+            if chosen(&name) {
+                let verdict = attempt_stage(stage);
+                report(&name, &verdict, None, &markers, &verdicts);
+                if verdict == Verdict::Passed { passed += 1 } else { failed += 1 }
+            }
+        }
+    }
+    let unmarked = unmarked(sessions, &markers);
+    if !unmarked.is_empty() {
+        println!("markers ... FAILED\n    {unmarked}");
+        failed += 1;
+    }
+    println!("\nchecklist: {passed} passed; {failed} failed");
+    progress(current, sessions.last().map_or(0, |e| e.len()), done, next);
+    if failed == 0 { ExitCode::SUCCESS } else { ExitCode::from(101) }
+}
+
+/// The closing line: how many of the last session's exercises pass, and which is next.
+fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
+    match next {
+        Some(next) => println!(
+            "progress: session {session}: {done} of {total} exercises done; next: {next}"
+        ),
+        None => println!("progress: session {session}: all {total} exercises done"),
+    }
+}
+
+/// Runs a check, a panic caught.
+fn attempt(check: fn() -> Outcome) -> Verdict {
+    caught(|| check())
+}
+
+/// Checks a stage's image, a panic caught.
+fn attempt_stage(stage: &'static raycourse::Stage) -> Verdict {
+    caught(|| images::check(stage))
+}
+
+/// The verdict of `run`: a panic with a stub's message names the stub's exercise.
+fn caught(run: impl FnOnce() -> Outcome) -> Verdict {
+    match panic::catch_unwind(AssertUnwindSafe(run)) {
+        Ok(Ok(())) => Verdict::Passed,
+        Ok(Err(why)) => Verdict::Failed(why),
+        Err(payload) => {
+            let message = payload
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| payload.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+                .unwrap_or_default();
+            let place = PANIC_PLACE.lock().map(|p| p.clone()).unwrap_or_default();
+            match stub_of(&message) {
+                Some(stub) => Verdict::Stub(stub.to_owned()),
+                None => Verdict::Failed(format!("panicked: {message} ({place})")),
+            }
+        }
+    }
+}
+
+/// The exercise whose stub panicked with `message`, if it was one.
+fn stub_of(message: &str) -> Option<&str> {
+    let rest = message.strip_prefix("not yet implemented: exercise ")?;
+    rest.split(',').next()
+}
+
+/// Prints a line of the checklist and, for a failure, why.
+fn report(
+    name: &str,
+    verdict: &Verdict,
+    exercise: Option<&Exercise>,
+    markers: &HashMap<String, Marker>,
+    earlier: &HashMap<&str, Verdict>,
+) {
+    let why = match verdict {
+        Verdict::Passed => {
+            println!("{name} ... ok");
+            return;
+        }
+        Verdict::Failed(why) => why,
+        Verdict::Stub(stub) => {
+            println!("{name} ... FAILED");
+            if exercise.is_some_and(|e| e.id == stub) {
+                println!("    exercise {}: still todo!(); write it", describe(stub, markers));
+            } else {
+                println!(
+                    "    needs exercise {} first: it is still todo!()",
+                    describe(stub, markers)
+                );
+            }
+            return;
+        }
+    };
+    println!("{name} ... FAILED");
+    match exercise {
+        Some(e) => println!("    exercise {}: {why}", describe(e.id, markers)),
+        None => println!("    {why}"),
+    }
+    for need in exercise.map_or(&[][..], |e| e.needs) {
+        if earlier.get(need).is_some_and(|v| *v != Verdict::Passed) {
+            println!(
+                "    it calls exercise {}, which fails too: fix that one first",
+                describe(need, markers)
+            );
+        }
+    }
+}
+
+/// `s1.2, the ray-sphere distance (book session 1, "A white disk")`, or the number
+/// alone where no marker names it (a function a later session replaced).
+fn describe(id: &str, markers: &HashMap<String, Marker>) -> String {
+    match markers.get(id) {
+        Some(m) => format!("{id}, {} ({})", m.title, m.book),
+        None => id.to_owned(),
+    }
+}
+
+/// Where the last panic happened: the checklist prints it beside the message.
+static PANIC_PLACE: Mutex<String> = Mutex::new(String::new());
+
+/// Panics print nothing by themselves: the checklist reports them on their line.
+fn quiet_panics() {
+    panic::set_hook(Box::new(|info| {
+        if let (Ok(mut place), Some(at)) = (PANIC_PLACE.lock(), info.location()) {
+            *place = format!("{}:{}", at.file(), at.line());
+        }
+    }));
+}
+
+/// The markers in the crate's sources, by exercise number, with the function each
+/// marks (`Sphere::intersect`).
+fn markers() -> HashMap<String, Marker> {
+    let mut markers = HashMap::new();
+    for (id, title, book) in marker_lines(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src")) {
+        markers.insert(id, Marker { title, book });
+    }
+    markers
+}
+
+/// `(number, title, book)` of every marker line below `folder`.
+fn marker_lines(folder: &std::path::Path) -> Vec<(String, String, String)> {
+    let mut found = vec![];
+    for entry in std::fs::read_dir(folder).into_iter().flatten().flatten() {
+        let path = entry.path();
+        if path.is_dir() {
+            found.extend(marker_lines(&path));
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            found.extend(text.lines().filter_map(parse_marker));
+        }
+    }
+    found
+}
+
+/// The marker in a line such as
+/// `/// Exercise s1.2, the ray-sphere distance: book session 1, "A white disk".`
+fn parse_marker(line: &str) -> Option<(String, String, String)> {
+    let rest = line.trim().strip_prefix("/// Exercise ")?;
+    let (id, rest) = rest.split_once(", ")?;
+    let (title, book) = rest.split_once(": ")?;
+    Some((id.to_owned(), title.to_owned(), book.trim_end_matches('.').to_owned()))
+}
+
+/// What is wrong between the markers and the checklist: a marker without an
+/// exercise here, or an exercise named after another number.
+fn unmarked(sessions: &[&[Exercise]], markers: &HashMap<String, Marker>) -> String {
+    let mut wrong = vec![];
+    for id in markers.keys() {
+        if !sessions.iter().flat_map(|s| s.iter()).any(|e| e.id == id) {
+            wrong.push(format!("the marker of {id} has no exercise in the checklist"));
+        }
+    }
+    for e in sessions.iter().flat_map(|s| s.iter()) {
+        if !e.name.starts_with(&format!("{}_", e.id.replace('.', "_"))) {
+            wrong.push(format!("{} is named after another exercise than {}", e.name, e.id));
+        }
+    }
+    wrong.sort();
+    wrong.join("\n    ")
+}

@@ -1,0 +1,277 @@
+//! Each stage rendered small by the code under test and compared with its reference
+//! image in `references/`, as `check` compares a student's image: within a few
+//! display levels per pixel for a stage of one sample per pixel, within the noise,
+//! block by block, for a Monte Carlo stage. Any right implementation passes: the
+//! textbook formula or the robust one, any order of drawing random numbers.
+//!
+//! The references are this crate's renders: the deterministic stages as 8-bit PNGs,
+//! the Monte Carlo ones with many more samples and another seed, as 16-bit PNGs of
+//! the displayed value (256 steps per display level), so that reading them back
+//! loses nothing the comparison could see.
+
+use std::num::NonZeroU32;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use image::{ImageBuffer, Rgb, RgbImage};
+use raycourse::check::compare::{Linear, brightness_ratio, compare_blocks, compare_pixels, displayed};
+use raycourse::maths::Real;
+use raycourse::{Film, Overrides, Stage, render, stages};
+
+use crate::known::Outcome;
+
+/// The side of the images compared, in pixels: four blocks of 8 x 8 pixels across.
+const SIZE: u32 = 32;
+
+/// How many times more samples a Monte Carlo reference has than the render under
+/// test, which takes the course's: fewer would miss the rare paths that find a
+/// small light (a stage's fireflies), and its mean with them.
+const REFERENCE_FACTOR: u32 = 8;
+
+/// The seed of the references: not the course's, so that their noise is not the
+/// render's own.
+const REFERENCE_SEED: u64 = 1;
+
+/// The display levels a pixel of a deterministic stage may differ by (as `check`).
+const TOLERANCE: u8 = 3;
+
+/// The stage's line in the checklist: `s2_stage_glass`.
+pub fn check_name(stage: &Stage) -> String {
+    format!("s{}_stage_{}", stage.session, stage.name.replace('-', "_"))
+}
+
+/// Whether the stage draws random numbers: more than one sample per pixel.
+fn monte_carlo(stage: &Stage) -> bool {
+    course_samples(stage) > 1
+}
+
+fn course_samples(stage: &Stage) -> u32 {
+    stage
+        .scene(&Overrides::default())
+        .expect("the stages' scene files are valid")
+        .settings
+        .samples
+}
+
+/// The stage rendered at `SIZE`, with `samples` per pixel and `seed`, and its gamma;
+/// by the fast engine (the same image, sooner) for a reference.
+fn film(stage: &Stage, samples: u32, seed: Option<u64>, fast: bool) -> (Film, Real) {
+    let overrides = Overrides {
+        width: NonZeroU32::new(SIZE),
+        height: NonZeroU32::new(SIZE),
+        samples: NonZeroU32::new(samples),
+        seed,
+        fast,
+        ..Overrides::default()
+    };
+    let scene = stage.scene(&overrides).expect("the stages' scene files are valid");
+    (render(&scene).film, scene.settings.gamma)
+}
+
+fn reference_path(stage: &Stage) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/exercises/references")
+        .join(format!("{}.png", stage.name))
+}
+
+/// Renders the stage with the code under test and compares it with its reference;
+/// the render is written to the test's target folder for a look when it differs.
+pub fn check(stage: &Stage) -> Outcome {
+    let (film, gamma) = film(stage, course_samples(stage), None, false);
+    let reference = reference_path(stage);
+    let yours = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{}.png", stage.name));
+    let found = if monte_carlo(stage) {
+        compare_noisy(&film, &read_16(&reference)?, gamma)
+    } else {
+        compare_exact(&displayed(&film, gamma), &read_8(&reference)?, gamma)
+    };
+    found.map_err(|why| {
+        let saved = displayed(&film, gamma).save(&yours).is_ok();
+        let place = if saved { format!("; yours is {}", yours.display()) } else { String::new() };
+        format!(
+            "the stage `{}` at {SIZE} x {SIZE} differs from {}{place}: {why}",
+            stage.name,
+            reference.display()
+        )
+    })
+}
+
+/// A deterministic stage: pixel by pixel, edges allowed, then the hints.
+fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome {
+    let outcome = compare_pixels(yours, reference, TOLERANCE);
+    if !outcome.image_differs {
+        return Ok(());
+    }
+    let (worst, at) = worst_pixel(yours, reference);
+    let mut why = format!(
+        "{} of {} pixels differ by more than {TOLERANCE} display levels (the most, {worst} levels, at column {}, row {})",
+        outcome.differs.iter().filter(|d| **d).count(),
+        outcome.differs.len(),
+        at.0,
+        at.1
+    );
+    if let Some(hint) = flip_hint(yours, reference).or_else(|| gamma_hint(yours, reference, gamma)) {
+        why += &format!("; {hint}");
+    } else if let Some(hint) = brightness_hint(&Linear::from_rgb8(yours, gamma), &Linear::from_rgb8(reference, gamma), gamma) {
+        why += &format!("; {hint}");
+    }
+    Err(why)
+}
+
+/// A Monte Carlo stage: block by block against the noise, then the hints.
+fn compare_noisy(yours: &Film, reference: &Linear, gamma: Real) -> Outcome {
+    let linear = Linear::from_film(yours, gamma);
+    let outcome = compare_blocks(&linear, reference, gamma);
+    if !outcome.image_differs {
+        return Ok(());
+    }
+    let mut why = format!(
+        "{} of {} blocks of 8 x 8 pixels differ beyond the noise",
+        outcome.differs.iter().filter(|d| **d).count(),
+        outcome.differs.len()
+    );
+    let shown = displayed(yours, gamma);
+    let reference_shown = to_rgb8(reference, gamma);
+    if let Some(hint) = flip_hint(&shown, &reference_shown).or_else(|| brightness_hint(&linear, reference, gamma)) {
+        why += &format!("; {hint}");
+    }
+    Err(why)
+}
+
+/// The largest difference of a channel, and where.
+fn worst_pixel(yours: &RgbImage, reference: &RgbImage) -> (u8, (u32, u32)) {
+    let mut worst = (0, (0, 0));
+    for (x, y, p) in yours.enumerate_pixels() {
+        let q = reference.get_pixel(x, y);
+        let d = (0..3).map(|c| p[c].abs_diff(q[c])).max().unwrap_or(0);
+        if d > worst.0 {
+            worst = (d, (x, y));
+        }
+    }
+    worst
+}
+
+/// The mistake an upside-down or mirrored image shows.
+fn flip_hint(yours: &RgbImage, reference: &RgbImage) -> Option<String> {
+    let upside_down = image::imageops::flip_vertical(yours);
+    let mirrored = image::imageops::flip_horizontal(yours);
+    if !compare_pixels(&upside_down, reference, 2 * TOLERANCE).image_differs {
+        Some("it is the reference upside down: row 0 is the top of the image, so the pixel's height counts from the bottom, i = H - 1 - row".into())
+    } else if !compare_pixels(&mirrored, reference, 2 * TOLERANCE).image_differs {
+        Some("it is the reference mirrored left to right: column j grows to the right, x = j - W/2 + 0.5".into())
+    } else {
+        None
+    }
+}
+
+/// The mistake an image without its gamma, or with it twice, shows.
+fn gamma_hint(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Option<String> {
+    if gamma == 1.0 {
+        return None;
+    }
+    let remap = |power: f64| {
+        let mut image = reference.clone();
+        for v in image.iter_mut() {
+            let linear = f64::from(*v).powf(f64::from(gamma));
+            *v = linear.powf(power).round().min(255.0) as u8;
+        }
+        image
+    };
+    let g = f64::from(gamma);
+    if !compare_pixels(yours, &remap(1.0), 2 * TOLERANCE).image_differs {
+        Some(format!("it shows the radiance without the display's gamma: a pixel is L^(1/gamma), here gamma = {gamma}"))
+    } else if !compare_pixels(yours, &remap(1.0 / (g * g)), 2 * TOLERANCE).image_differs {
+        Some("the display's gamma is applied twice: a pixel is L^(1/gamma), once".into())
+    } else {
+        None
+    }
+}
+
+/// The mistake an image brighter or darker everywhere by a telling factor shows.
+fn brightness_hint(yours: &Linear, reference: &Linear, gamma: Real) -> Option<String> {
+    let ratio = brightness_ratio(yours, reference, gamma);
+    let mean = ratio.iter().sum::<f64>() / 3.0;
+    let near = |target: f64| (mean / target - 1.0).abs() < 0.08;
+    let pi = std::f64::consts::PI;
+    let hint = if near(pi) {
+        "about pi times too bright: a diffuse surface reflects albedo / pi (the BRDF), and the light's power spreads over 4 pi r^2"
+    } else if near(1.0 / pi) {
+        "about pi times too dark: is 1 / pi counted twice, or the cosine-weighted pdf's pi not cancelled?"
+    } else if near(2.0) || near(0.5) {
+        "about twice too bright or too dark: the weight of a bounce must match how its direction was drawn (for a cosine-weighted direction the cosine and pi cancel, leaving the albedo)"
+    } else if (mean - 1.0).abs() > 0.05 {
+        return Some(format!("{:.0}% {} than the reference overall (per channel {:.2}x, {:.2}x, {:.2}x)", (mean - 1.0).abs() * 100.0, if mean > 1.0 { "brighter" } else { "darker" }, ratio[0], ratio[1], ratio[2]));
+    } else {
+        return None;
+    };
+    Some(format!("{hint} (brightness against the reference: {mean:.2}x)"))
+}
+
+/// A 16-bit reference read back to linear radiance: `L = (v / 256)^gamma`.
+fn read_16(path: &Path) -> Result<Linear, String> {
+    let image = image::open(path).map_err(|e| format!("{}: {e}", path.display()))?.into_rgb16();
+    let gamma = gamma_of(path)?;
+    Ok(Linear {
+        width: image.width(),
+        height: image.height(),
+        values: image
+            .as_raw()
+            .iter()
+            .map(|&v| (f64::from(v) / 256.0).powf(gamma))
+            .collect(),
+    })
+}
+
+/// The gamma of the stage whose reference is `path`.
+fn gamma_of(path: &Path) -> Result<f64, String> {
+    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or_default();
+    let stage = stages().find(|s| s.name == name).ok_or(format!("no stage {name}"))?;
+    let scene = stage.scene(&Overrides::default()).map_err(|e| e.to_string())?;
+    Ok(f64::from(scene.settings.gamma))
+}
+
+fn read_8(path: &Path) -> Result<RgbImage, String> {
+    Ok(image::open(path).map_err(|e| format!("{}: {e}", path.display()))?.into_rgb8())
+}
+
+/// A linear picture as the display shows it, 8 bits.
+fn to_rgb8(linear: &Linear, gamma: Real) -> RgbImage {
+    let g = f64::from(gamma);
+    let rgb = linear.values.iter().map(|v| v.max(0.0).powf(1.0 / g).round().min(255.0) as u8).collect();
+    RgbImage::from_raw(linear.width, linear.height, rgb).expect("width x height pixels")
+}
+
+/// A film as a 16-bit image of its displayed value: `min(255, L^(1/gamma)) * 256`.
+fn to_rgb16(film: &Film, gamma: Real) -> ImageBuffer<Rgb<u16>, Vec<u16>> {
+    let g = f64::from(gamma);
+    let values = film
+        .pixels
+        .iter()
+        .flat_map(|p| p.to_array())
+        .map(|v| (f64::from(v).max(0.0).powf(1.0 / g).min(255.0) * 256.0).round().min(65535.0) as u16)
+        .collect();
+    ImageBuffer::from_raw(film.width, film.height, values).expect("width x height pixels")
+}
+
+/// Writes every stage's reference (`cargo test --test exercises -- --write-references`).
+pub fn write_references() -> ExitCode {
+    for stage in stages() {
+        let path = reference_path(stage);
+        let written = if monte_carlo(stage) {
+            let samples = course_samples(stage) * REFERENCE_FACTOR;
+            let (film, gamma) = film(stage, samples, Some(REFERENCE_SEED), true);
+            to_rgb16(&film, gamma).save(&path)
+        } else {
+            let (film, gamma) = film(stage, 1, None, true);
+            displayed(&film, gamma).save(&path)
+        };
+        match written {
+            Ok(()) => println!("{}", path.display()),
+            Err(e) => {
+                eprintln!("{}: {e}", path.display());
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    ExitCode::SUCCESS
+}

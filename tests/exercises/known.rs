@@ -1,0 +1,59 @@
+//! Known answers: comparisons that say what was given and what was expected.
+
+use raycourse::maths::{Real, Vec3};
+
+/// A check's result: `Err` says what went wrong, in the book's notation.
+pub type Outcome = Result<(), String>;
+
+/// `Ok` when `holds`, otherwise the message `why` gives.
+pub fn ensure(holds: bool, why: impl FnOnce() -> String) -> Outcome {
+    if holds { Ok(()) } else { Err(why()) }
+}
+
+/// `gave` within `tolerance` of `expected`.
+pub fn close(what: &str, gave: Real, expected: Real, tolerance: Real) -> Outcome {
+    ensure((gave - expected).abs() <= tolerance, || {
+        format!("{what}: gave {}, expected {} (within {tolerance})", num(gave), num(expected))
+    })
+}
+
+/// `gave` within `tolerance` of `expected`, component by component.
+pub fn close_vec(what: &str, gave: Vec3, expected: Vec3, tolerance: Real) -> Outcome {
+    ensure((gave - expected).abs().max_element() <= tolerance, || {
+        format!("{what}: gave {}, expected {} (within {tolerance})", vec(gave), vec(expected))
+    })
+}
+
+/// A number as the book writes it: a few significant digits.
+pub fn num(x: Real) -> String {
+    let text = format!("{x:.4}");
+    let text = text.trim_end_matches('0').trim_end_matches('.');
+    if text == "-0" { "0".into() } else { text.into() }
+}
+
+/// A vector as the book writes it: `(0, 0.5, -1)`.
+pub fn vec(v: Vec3) -> String {
+    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+}
+
+/// An optional value as the book writes it: the value, or `no hit`.
+pub fn maybe(t: Option<Real>) -> String {
+    t.map_or("no hit".into(), |t| format!("t = {}", num(t)))
+}
+
+/// The means of `f(u1, u2)` over an `n` x `n` grid of cell centres of the unit
+/// square: the quadrature a sampler's averages are checked with, exact to about
+/// `1 / n^2` for smooth integrands and the same whatever random numbers the
+/// student's code is given.
+pub fn grid_mean<const K: usize>(n: u32, mut f: impl FnMut(Real, Real) -> [Real; K]) -> [Real; K] {
+    let mut sum = [0.0; K];
+    for i in 0..n {
+        for j in 0..n {
+            let (u1, u2) = ((i as Real + 0.5) / n as Real, (j as Real + 0.5) / n as Real);
+            for (s, v) in sum.iter_mut().zip(f(u1, u2)) {
+                *s += v;
+            }
+        }
+    }
+    sum.map(|s| s / (n * n) as Real)
+}

@@ -1,0 +1,65 @@
+//! The course's exercises as a checklist, in the course's order: for each session,
+//! each exercise's known answers (worked out by hand, as the book does), then each
+//! of its stages rendered small and compared with the reference image in
+//! `references/`.
+//!
+//! In the course's crate every line passes: the code is the answer. In a student's
+//! exercise crate (`cargo xtask exercise sN DIR`) the session's functions are stubs,
+//! and the checklist says which one to write next, what it gave and what was
+//! expected. It is a test with a harness of its own (`harness = false`), so that its
+//! lines come out in the course's order rather than in parallel:
+//!
+//! ```text
+//! cargo test --test exercises                 # the whole checklist
+//! cargo test --test exercises -- s3_2         # the lines whose name contains s3_2
+//! cargo test --test exercises -- --write-references   # after an intended change
+//! ```
+
+mod checklist;
+mod images;
+mod known;
+mod s1;
+#[cfg(feature = "s2")]
+mod s2;
+#[cfg(feature = "s3")]
+mod s3;
+#[cfg(feature = "s4")]
+mod s4;
+#[cfg(feature = "s5")]
+mod s5;
+#[cfg(feature = "s6")]
+mod s6;
+#[cfg(feature = "s7")]
+mod s7;
+
+use std::process::ExitCode;
+
+/// The exercises of every session of the build, in the course's order.
+const SESSIONS: &[&[checklist::Exercise]] = &[
+    s1::EXERCISES,
+    #[cfg(feature = "s2")]
+    s2::EXERCISES,
+    #[cfg(feature = "s3")]
+    s3::EXERCISES,
+    #[cfg(feature = "s4")]
+    s4::EXERCISES,
+    #[cfg(feature = "s5")]
+    s5::EXERCISES,
+    #[cfg(feature = "s6")]
+    s6::EXERCISES,
+    #[cfg(feature = "s7")]
+    s7::EXERCISES,
+];
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    if args.iter().any(|a| a == "--write-references") {
+        return images::write_references();
+    }
+    let filters: Vec<&str> = args
+        .iter()
+        .map(String::as_str)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
+    checklist::run(SESSIONS, &filters)
+}

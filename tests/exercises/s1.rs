@@ -1,0 +1,170 @@
+//! Session 1: the camera ray, the ray-sphere distance, the nearest hit, Lambert.
+
+use std::path::Path;
+
+use raycourse::camera::Camera;
+use raycourse::geometry::{Ray, Sphere};
+use raycourse::lights::PointLight;
+use raycourse::maths::{Colour, PI, Real, Vec3};
+use raycourse::materials::Material;
+use raycourse::scene::Scene;
+use raycourse::{Overrides, parse_scene};
+
+use crate::checklist::Exercise;
+use crate::known::{Outcome, close_vec, ensure, maybe, vec};
+
+/// Session 1's exercises, in the book's order.
+pub const EXERCISES: &[Exercise] = &[
+    Exercise {
+        id: "s1.1",
+        name: "s1_1_camera_pixel_direction",
+        needs: &[],
+        check: pixel_direction,
+    },
+    Exercise {
+        id: "s1.2",
+        name: "s1_2_sphere_intersect",
+        needs: &[],
+        check: sphere_distance,
+    },
+    Exercise {
+        id: "s1.3",
+        name: "s1_3_scene_nearest_sphere",
+        needs: &["s1.2"],
+        check: nearest_sphere,
+    },
+    Exercise {
+        id: "s1.4",
+        name: "s1_4_point_light_lambert",
+        needs: &[],
+        check: lambert,
+    },
+];
+
+/// A 4 x 2 image with a 90-degree field of view: the image plane lies at
+/// `H / (2 tan 45) = 1` in front of the eye, and pixel centres sit half a pixel in.
+/// Top left (row 0, column 0): `i = H - 1 - 0 = 1`, so `(0 - 2 + 0.5, 1 - 1 + 0.5, -1)`.
+fn pixel_direction() -> Outcome {
+    let camera = Camera::new(Vec3::ZERO, PI / 2.0, 4, 2);
+    let cases = [
+        ((0, 0), Vec3::new(-1.5, 0.5, -1.0), "top left"),
+        ((1, 3), Vec3::new(1.5, -0.5, -1.0), "bottom right"),
+        ((0, 2), Vec3::new(0.5, 0.5, -1.0), "top, right of the centre"),
+    ];
+    for ((row, column), expected, place) in cases {
+        let gave = camera.pixel_direction(row, column);
+        ensure(gave.length() > 0.0 && gave.is_finite(), || {
+            format!("pixel (row {row}, column {column}) gave the direction {}", vec(gave))
+        })?;
+        // Any length is right: only the direction matters.
+        close_vec(
+            &format!("the direction through pixel (row {row}, column {column}), the {place} of a 4 x 2 image with a 90-degree field of view, normalised"),
+            gave.normalize(),
+            expected.normalize(),
+            1e-5,
+        )?;
+    }
+    Ok(())
+}
+
+/// A diffuse sphere for the checks.
+pub fn sphere(centre: Vec3, radius: Real) -> Sphere {
+    Sphere {
+        centre,
+        radius,
+        material: Material::Diffuse {
+            albedo: Colour::ONE,
+        },
+        emission: Colour::ZERO,
+    }
+}
+
+/// Rays from the origin: a sphere of radius 1 at distance 5 is met at `t = 5 - 1`;
+/// from the centre of a sphere of radius 2 the ray leaves at `t = 2`; a sphere behind
+/// the ray, or 2.24 away from its line, is missed; a sphere of radius 1 at
+/// `(0, 3, -4)`, 5 away along the ray, at `t = 4` again.
+fn sphere_distance() -> Outcome {
+    let z = Vec3::new(0.0, 0.0, -1.0);
+    let cases = [
+        ("in front", Vec3::new(0.0, 0.0, -5.0), 1.0, z, Some(4.0)),
+        ("around the eye", Vec3::ZERO, 2.0, z, Some(2.0)),
+        ("behind the eye", Vec3::new(0.0, 0.0, 5.0), 1.0, z, None),
+        ("beside the ray, 2.24 from its line", Vec3::new(0.0, 0.0, -5.0), 1.0, Vec3::new(0.0, 0.5, -1.0), None),
+        ("on an oblique ray", Vec3::new(0.0, 3.0, -4.0), 1.0, Vec3::new(0.0, 0.6, -0.8), Some(4.0)),
+    ];
+    for (what, centre, radius, direction, expected) in cases {
+        let ray = Ray::new(Vec3::ZERO, direction);
+        let gave = sphere(centre, radius).intersect(&ray);
+        let right = match (gave, expected) {
+            (Some(t), Some(e)) => (t - e).abs() < 1e-4,
+            (None, None) => true,
+            _ => false,
+        };
+        ensure(right, || {
+            format!(
+                "a sphere of radius {radius} at {} {what}, the ray from (0, 0, 0) along {}: gave {}, expected {}",
+                vec(centre),
+                vec(ray.direction),
+                maybe(gave),
+                maybe(expected)
+            )
+        })?;
+    }
+    Ok(())
+}
+
+/// A scene of spheres read from TOML text, as a stage's scene file is read.
+pub fn scene(toml: &str) -> Scene {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("sessions/checks.toml");
+    parse_scene(toml, &path, &Overrides::default()).expect("the checks' scenes are valid")
+}
+
+/// Three spheres along the ray, listed far one first: the nearest is number 1 at
+/// `t = 4`, not the first of the list that the ray meets (`t = 9`); the one behind
+/// the eye does not count.
+fn nearest_sphere() -> Outcome {
+    let room = scene(
+        "[render]\nwidth = 8\nheight = 8\n[camera]\nposition = [0, 0, 0]\nfov = 60\n\
+         [light]\nposition = [0, 10, 0]\nintensity = 1\n\
+         [[spheres]]\ncentre = [0, 0, -10]\nradius = 1\nmaterial = { diffuse = [1, 1, 1] }\n\
+         [[spheres]]\ncentre = [0, 0, -5]\nradius = 1\nmaterial = { diffuse = [1, 1, 1] }\n\
+         [[spheres]]\ncentre = [0, 0, 3]\nradius = 1\nmaterial = { diffuse = [1, 1, 1] }\n",
+    );
+    let ray = Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0));
+    let gave = room.nearest_sphere(&ray);
+    ensure(gave.is_some_and(|(t, i)| i == 1 && (t - 4.0).abs() < 1e-4), || {
+        format!("spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {gave:?}, expected sphere 1 at t = 4")
+    })?;
+    let up = Ray::new(Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0));
+    let gave = room.nearest_sphere(&up);
+    ensure(gave.is_none(), || {
+        format!("the same spheres, the ray along +y: gave {gave:?}, expected no hit")
+    })
+}
+
+/// A light of power `Phi = 400 pi^2` 10 above the point: `Phi / (4 pi r^2) = pi`,
+/// so facing it the radiance is `pi * 1 * albedo / pi = albedo`; tilted by 45
+/// degrees, `albedo / sqrt 2`; 20 away, a quarter; facing away, black.
+fn lambert() -> Outcome {
+    let light = PointLight {
+        position: Vec3::new(0.0, 10.0, 0.0),
+        intensity: 400.0 * PI * PI,
+    };
+    let albedo = Colour::new(0.5, 0.25, 1.0);
+    let up = Vec3::new(0.0, 1.0, 0.0);
+    let cases = [
+        ("facing the light 10 away", Vec3::ZERO, up, albedo),
+        ("tilted by 45 degrees", Vec3::ZERO, Vec3::new(1.0, 1.0, 0.0).normalize(), albedo / (2.0 as Real).sqrt()),
+        ("facing the light 20 away", Vec3::new(0.0, -10.0, 0.0), up, albedo / 4.0),
+        ("facing away", Vec3::ZERO, -up, Colour::ZERO),
+    ];
+    for (what, point, normal, expected) in cases {
+        close_vec(
+            &format!("albedo {} at {}, normal {}, {what}, under a light of power 400 pi^2 at (0, 10, 0)", vec(albedo), vec(point), vec(normal)),
+            light.lambert(point, normal, albedo),
+            expected,
+            1e-4,
+        )?;
+    }
+    Ok(())
+}

@@ -1,0 +1,150 @@
+//! Session 3: the cosine-weighted direction, its frame, the indirect bounce, the
+//! Gaussian pixel filter.
+
+use raycourse::geometry::Ray;
+use raycourse::integrator::Tracer;
+use raycourse::maths::frame::Frame;
+use raycourse::maths::sampling::{sample_cosine_hemisphere, sample_gaussian};
+use raycourse::maths::{Colour, Real, Vec3};
+
+use crate::checklist::Exercise;
+use crate::known::{Outcome, close, close_vec, ensure, grid_mean, num, vec};
+use crate::s1::scene;
+
+/// Session 3's exercises, in the book's order.
+pub const EXERCISES: &[Exercise] = &[
+    Exercise {
+        id: "s3.1",
+        name: "s3_1_sample_cosine_hemisphere",
+        needs: &[],
+        check: cosine_direction,
+    },
+    Exercise {
+        id: "s3.2",
+        name: "s3_2_frame_new",
+        needs: &[],
+        check: frame,
+    },
+    Exercise {
+        id: "s3.3",
+        name: "s3_3_tracer_indirect_light",
+        needs: &["s3.1", "s3.2"],
+        check: indirect_bounce,
+    },
+    Exercise {
+        id: "s3.4",
+        name: "s3_4_sample_gaussian",
+        needs: &[],
+        check: gaussian,
+    },
+];
+
+/// The grid used for the samplers' averages: 64 x 64 points.
+const GRID: u32 = 64;
+
+/// With density `cos(theta) / pi`, `E[cos theta] = int cos^2 / pi dw = 2/3` and
+/// `E[cos^2 theta] = 1/2`; the azimuth is uniform, so `E[x] = E[y] = 0` and
+/// `E[x^2] = E[sin^2 theta] / 2 = 1/4`. Every direction is a unit vector above
+/// the surface (`z >= 0`).
+fn cosine_direction() -> Outcome {
+    let mut worst: Option<(Real, Real, Vec3)> = None;
+    let [z, z2, x, y, x2] = grid_mean(GRID, |u1, u2| {
+        let w = sample_cosine_hemisphere(u1, u2);
+        if w.z < -1e-6 || (w.length() - 1.0).abs() > 1e-4 {
+            worst.get_or_insert((u1, u2, w));
+        }
+        [w.z, w.z * w.z, w.x, w.y, w.x * w.x]
+    });
+    if let Some((u1, u2, w)) = worst {
+        return Err(format!("(u1, u2) = ({}, {}) gave {}: expected a unit vector with z >= 0", num(u1), num(u2), vec(w)));
+    }
+    close("the mean of cos(theta) = z", z, 2.0 / 3.0, 0.01).map_err(|e| {
+        format!("{e}; uniform directions would give 1/2: the density must be cos(theta) / pi")
+    })?;
+    close("the mean of cos^2(theta)", z2, 0.5, 0.01)?;
+    close("the mean of x", x, 0.0, 0.01)?;
+    close("the mean of y", y, 0.0, 0.01)?;
+    close("the mean of x^2", x2, 0.25, 0.01)
+}
+
+/// The frame of a normal `N`: two tangents `T1`, `T2` of length 1, at right angles
+/// to each other and to `N`, with `N` itself as the third axis, for every normal
+/// (the poles and the axes included).
+fn frame() -> Outcome {
+    let normals = [
+        Vec3::Z,
+        -Vec3::Z,
+        Vec3::X,
+        -Vec3::Y,
+        Vec3::new(1.0, 2.0, 3.0).normalize(),
+        Vec3::new(-0.3, 0.1, -0.9).normalize(),
+        Vec3::new(1e-4, 0.0, -1.0).normalize(),
+    ];
+    for n in normals {
+        let f = Frame::new(n);
+        let what = format!("the frame of N = {}", vec(n));
+        close_vec(&format!("{what}: its axis N"), f.n, n, 1e-6)?;
+        for (name, t) in [("T1", f.t1), ("T2", f.t2)] {
+            close(&format!("{what}: the length of {name} = {}", vec(t)), t.length(), 1.0, 1e-5)?;
+            close(&format!("{what}: {name} . N"), t.dot(n), 0.0, 1e-5)?;
+        }
+        close(&format!("{what}: T1 . T2"), f.t1.dot(f.t2), 0.0, 1e-5)?;
+    }
+    Ok(())
+}
+
+/// A furnace with a known answer: inside a sphere of radius 10 and albedo 0.5, a
+/// point light of power `Phi = 800 pi^2` at its centre lights every point of the
+/// wall head on, so the wall sends `Phi / (4 pi 10^2) * 1 * 0.5 / pi = 1` in every
+/// direction. One bounce from a point of the floor then brings back `albedo * 1`
+/// whichever direction it draws, if its weight matches its density: the mean of
+/// 20,000 bounces of albedo (0.8, 0.4, 0.2) must be (0.8, 0.4, 0.2) within 3%.
+fn indirect_bounce() -> Outcome {
+    let furnace = scene(
+        "[render]\nwidth = 8\nheight = 8\nbounces = 1\nindirect = true\ngamma = 2.2\n\
+         [camera]\nposition = [0, 0, 0]\nfov = 60\n\
+         [light]\nposition = [0, 0, 0]\nintensity = 7895.6835208714865\n\
+         [[spheres]]\ncentre = [0, 0, 0]\nradius = 10\nmaterial = { diffuse = [0.5, 0.5, 0.5] }\n",
+    );
+    let mut tracer = Tracer::new(&furnace);
+    let floor = tracer
+        .trace(&Ray::new(Vec3::ZERO, -Vec3::Y))
+        .expect("the ray down meets the furnace's floor")
+        .facing_the_ray();
+    let albedo = Colour::new(0.8, 0.4, 0.2);
+    let n = 20_000;
+    let mean = (0..n)
+        .map(|_| tracer.indirect_light(&floor, albedo, 1))
+        .sum::<Colour>()
+        / n as Real;
+    let right = (mean / albedo - Colour::ONE).abs().max_element() < 0.03;
+    ensure(right, || {
+        format!("inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo (0.8, 0.4, 0.2) gave {}, expected (0.8, 0.4, 0.2): the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi", vec(mean))
+    })
+}
+
+/// Box-Muller: two independent normal numbers, so over the grid `E[x] = E[y] = 0`,
+/// `E[x^2] = E[y^2] = sigma^2`, `E[xy] = 0`, and a share `1 - e^(-1/2) = 0.3935`
+/// of the points within `sigma` of the centre; finite for `u1 = 0` and for the
+/// largest `u1` below 1.
+fn gaussian() -> Outcome {
+    let sigma = 0.5;
+    let [x, y, x2, y2, xy, within] = grid_mean(GRID, |u1, u2| {
+        let (x, y) = sample_gaussian(u1, u2, sigma);
+        let inside = if x * x + y * y <= sigma * sigma { 1.0 } else { 0.0 };
+        [x, y, x * x, y * y, x * y, inside]
+    });
+    close("the mean of x", x, 0.0, 0.01)?;
+    close("the mean of y", y, 0.0, 0.01)?;
+    close("the mean of x^2, sigma = 0.5", x2, 0.25, 0.01)?;
+    close("the mean of y^2, sigma = 0.5", y2, 0.25, 0.01)?;
+    close("the mean of x y", xy, 0.0, 0.01)?;
+    close("the share of offsets within sigma of the centre", within, 0.3935, 0.01)?;
+    for u1 in [0.0, 1.0 - Real::EPSILON] {
+        let (x, y) = sample_gaussian(u1, 0.3, sigma);
+        ensure(x.is_finite() && y.is_finite(), || {
+            format!("u1 = {u1}: gave ({x}, {y}), expected finite numbers (the logarithm of 1 - u1, never of 0)")
+        })?;
+    }
+    Ok(())
+}
