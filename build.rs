@@ -21,7 +21,11 @@ fn main() {
     let manifest = std::fs::read_to_string("Cargo.toml").unwrap_or_default();
     let made = if enabled.is_some() {
         "features"
-    } else if manifest.contains("[package.metadata.raycourse]\nexercises = true") {
+    } else if manifest
+        .lines()
+        .skip_while(|l| l.trim() != "[package.metadata.raycourse]")
+        .any(|l| l.trim() == "exercises = true")
+    {
         "exercises"
     } else {
         "view"

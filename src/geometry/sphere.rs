@@ -30,6 +30,8 @@ impl Sphere {
     /// positive one. Right for the course's scenes; [`Sphere::intersect`], which the
     /// renderer uses, computes the same without the cancellation that makes this
     /// formula miss a small, distant sphere.
+    ///
+    /// Exercise s1.2, the ray-sphere distance: book session 1, "A white disk".
     pub fn intersect_textbook(&self, ray: &Ray) -> Option<Real> {
         let s = ray.origin - self.centre;
         let sd = s.dot(ray.direction);

@@ -68,7 +68,11 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
                     next = Some(describe(exercise.id, &markers));
                 }
             }
-            if ok { passed += 1 } else { failed += 1 }
+            if ok {
+                passed += 1
+            } else {
+                failed += 1
+            }
             verdicts.insert(exercise.id, verdict);
         }
         for stage in stages().filter(|s| s.session == session) {
@@ -76,7 +80,11 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
             if chosen(&name) {
                 let verdict = attempt_stage(stage);
                 report(&name, &verdict, None, &markers, &verdicts);
-                if verdict == Verdict::Passed { passed += 1 } else { failed += 1 }
+                if verdict == Verdict::Passed {
+                    passed += 1
+                } else {
+                    failed += 1
+                }
             }
         }
     }
@@ -87,15 +95,19 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     }
     println!("\nchecklist: {passed} passed; {failed} failed");
     progress(current, sessions.last().map_or(0, |e| e.len()), done, next);
-    if failed == 0 { ExitCode::SUCCESS } else { ExitCode::from(101) }
+    if failed == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(101)
+    }
 }
 
 /// The closing line: how many of the last session's exercises pass, and which is next.
 fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
     match next {
-        Some(next) => println!(
-            "progress: session {session}: {done} of {total} exercises done; next: {next}"
-        ),
+        Some(next) => {
+            println!("progress: session {session}: {done} of {total} exercises done; next: {next}")
+        }
         None => println!("progress: session {session}: all {total} exercises done"),
     }
 }
@@ -153,7 +165,10 @@ fn report(
         Verdict::Stub(stub) => {
             println!("{name} ... FAILED");
             if exercise.is_some_and(|e| e.id == stub) {
-                println!("    exercise {}: still todo!(); write it", describe(stub, markers));
+                println!(
+                    "    exercise {}: still todo!(); write it",
+                    describe(stub, markers)
+                );
             } else {
                 println!(
                     "    needs exercise {} first: it is still todo!()",
@@ -203,7 +218,9 @@ fn quiet_panics() {
 /// marks (`Sphere::intersect`).
 fn markers() -> HashMap<String, Marker> {
     let mut markers = HashMap::new();
-    for (id, title, book) in marker_lines(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src")) {
+    for (id, title, book) in
+        marker_lines(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src"))
+    {
         markers.insert(id, Marker { title, book });
     }
     markers
@@ -230,21 +247,40 @@ fn parse_marker(line: &str) -> Option<(String, String, String)> {
     let rest = line.trim().strip_prefix("/// Exercise ")?;
     let (id, rest) = rest.split_once(", ")?;
     let (title, book) = rest.split_once(": ")?;
-    Some((id.to_owned(), title.to_owned(), book.trim_end_matches('.').to_owned()))
+    Some((
+        id.to_owned(),
+        title.to_owned(),
+        book.trim_end_matches('.').to_owned(),
+    ))
 }
 
 /// What is wrong between the markers and the checklist: a marker without an
-/// exercise here, or an exercise named after another number.
+/// exercise here (a later session's marker aside: session 2's gamma is written in
+/// session 2, on a function that exists from session 1), or an exercise named after
+/// another number.
 fn unmarked(sessions: &[&[Exercise]], markers: &HashMap<String, Marker>) -> String {
     let mut wrong = vec![];
-    for id in markers.keys() {
+    let later = |id: &str| {
+        let session: usize = id[1..]
+            .split('.')
+            .next()
+            .and_then(|n| n.parse().ok())
+            .unwrap_or(0);
+        session > sessions.len()
+    };
+    for id in markers.keys().filter(|id| !later(id)) {
         if !sessions.iter().flat_map(|s| s.iter()).any(|e| e.id == id) {
-            wrong.push(format!("the marker of {id} has no exercise in the checklist"));
+            wrong.push(format!(
+                "the marker of {id} has no exercise in the checklist"
+            ));
         }
     }
     for e in sessions.iter().flat_map(|s| s.iter()) {
         if !e.name.starts_with(&format!("{}_", e.id.replace('.', "_"))) {
-            wrong.push(format!("{} is named after another exercise than {}", e.name, e.id));
+            wrong.push(format!(
+                "{} is named after another exercise than {}",
+                e.name, e.id
+            ));
         }
     }
     wrong.sort();

@@ -14,14 +14,22 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use image::{ImageBuffer, Rgb, RgbImage};
-use raycourse::check::compare::{Linear, brightness_ratio, compare_blocks, compare_pixels, displayed};
+use raycourse::check::compare::{
+    Linear, brightness_ratio, compare_blocks, compare_pixels, displayed,
+};
 use raycourse::maths::Real;
 use raycourse::{Film, Overrides, Stage, render, stages};
 
 use crate::known::Outcome;
 
-/// The side of the images compared, in pixels: four blocks of 8 x 8 pixels across.
-const SIZE: u32 = 32;
+/// The side of the Monte Carlo images compared, in pixels: four blocks of 8 x 8
+/// pixels across.
+const NOISY_SIZE: u32 = 32;
+
+/// The side of the deterministic images compared: large enough that a shaded
+/// sphere changes by fewer display levels from one pixel to the next than `check`
+/// counts as an edge (where any difference is allowed).
+const EXACT_SIZE: u32 = 64;
 
 /// How many times more samples a Monte Carlo reference has than the render under
 /// test, which takes the course's: fewer would miss the rare paths that find a
@@ -53,18 +61,25 @@ fn course_samples(stage: &Stage) -> u32 {
         .samples
 }
 
-/// The stage rendered at `SIZE`, with `samples` per pixel and `seed`, and its gamma;
+/// The stage rendered small, with `samples` per pixel and `seed`, and its gamma;
 /// by the fast engine (the same image, sooner) for a reference.
 fn film(stage: &Stage, samples: u32, seed: Option<u64>, fast: bool) -> (Film, Real) {
+    let size = if monte_carlo(stage) {
+        NOISY_SIZE
+    } else {
+        EXACT_SIZE
+    };
     let overrides = Overrides {
-        width: NonZeroU32::new(SIZE),
-        height: NonZeroU32::new(SIZE),
+        width: NonZeroU32::new(size),
+        height: NonZeroU32::new(size),
         samples: NonZeroU32::new(samples),
         seed,
         fast,
         ..Overrides::default()
     };
-    let scene = stage.scene(&overrides).expect("the stages' scene files are valid");
+    let scene = stage
+        .scene(&overrides)
+        .expect("the stages' scene files are valid");
     (render(&scene).film, scene.settings.gamma)
 }
 
@@ -87,10 +102,16 @@ pub fn check(stage: &Stage) -> Outcome {
     };
     found.map_err(|why| {
         let saved = displayed(&film, gamma).save(&yours).is_ok();
-        let place = if saved { format!("; yours is {}", yours.display()) } else { String::new() };
+        let place = if saved {
+            format!("; yours is {}", yours.display())
+        } else {
+            String::new()
+        };
         format!(
-            "the stage `{}` at {SIZE} x {SIZE} differs from {}{place}: {why}",
+            "the stage `{}` at {} x {} differs from {}{place}: {why}",
             stage.name,
+            film.width,
+            film.height,
             reference.display()
         )
     })
@@ -110,9 +131,14 @@ fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome
         at.0,
         at.1
     );
-    if let Some(hint) = flip_hint(yours, reference).or_else(|| gamma_hint(yours, reference, gamma)) {
+    if let Some(hint) = flip_hint(yours, reference).or_else(|| gamma_hint(yours, reference, gamma))
+    {
         why += &format!("; {hint}");
-    } else if let Some(hint) = brightness_hint(&Linear::from_rgb8(yours, gamma), &Linear::from_rgb8(reference, gamma), gamma) {
+    } else if let Some(hint) = brightness_hint(
+        &Linear::from_rgb8(yours, gamma),
+        &Linear::from_rgb8(reference, gamma),
+        gamma,
+    ) {
         why += &format!("; {hint}");
     }
     Err(why)
@@ -132,7 +158,9 @@ fn compare_noisy(yours: &Film, reference: &Linear, gamma: Real) -> Outcome {
     );
     let shown = displayed(yours, gamma);
     let reference_shown = to_rgb8(reference, gamma);
-    if let Some(hint) = flip_hint(&shown, &reference_shown).or_else(|| brightness_hint(&linear, reference, gamma)) {
+    if let Some(hint) =
+        flip_hint(&shown, &reference_shown).or_else(|| brightness_hint(&linear, reference, gamma))
+    {
         why += &format!("; {hint}");
     }
     Err(why)
@@ -179,7 +207,9 @@ fn gamma_hint(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Option<Str
     };
     let g = f64::from(gamma);
     if !compare_pixels(yours, &remap(1.0), 2 * TOLERANCE).image_differs {
-        Some(format!("it shows the radiance without the display's gamma: a pixel is L^(1/gamma), here gamma = {gamma}"))
+        Some(format!(
+            "it shows the radiance without the display's gamma: a pixel is L^(1/gamma), here gamma = {gamma}"
+        ))
     } else if !compare_pixels(yours, &remap(1.0 / (g * g)), 2 * TOLERANCE).image_differs {
         Some("the display's gamma is applied twice: a pixel is L^(1/gamma), once".into())
     } else {
@@ -200,16 +230,27 @@ fn brightness_hint(yours: &Linear, reference: &Linear, gamma: Real) -> Option<St
     } else if near(2.0) || near(0.5) {
         "about twice too bright or too dark: the weight of a bounce must match how its direction was drawn (for a cosine-weighted direction the cosine and pi cancel, leaving the albedo)"
     } else if (mean - 1.0).abs() > 0.05 {
-        return Some(format!("{:.0}% {} than the reference overall (per channel {:.2}x, {:.2}x, {:.2}x)", (mean - 1.0).abs() * 100.0, if mean > 1.0 { "brighter" } else { "darker" }, ratio[0], ratio[1], ratio[2]));
+        return Some(format!(
+            "{:.0}% {} than the reference overall (per channel {:.2}x, {:.2}x, {:.2}x)",
+            (mean - 1.0).abs() * 100.0,
+            if mean > 1.0 { "brighter" } else { "darker" },
+            ratio[0],
+            ratio[1],
+            ratio[2]
+        ));
     } else {
         return None;
     };
-    Some(format!("{hint} (brightness against the reference: {mean:.2}x)"))
+    Some(format!(
+        "{hint} (brightness against the reference: {mean:.2}x)"
+    ))
 }
 
 /// A 16-bit reference read back to linear radiance: `L = (v / 256)^gamma`.
 fn read_16(path: &Path) -> Result<Linear, String> {
-    let image = image::open(path).map_err(|e| format!("{}: {e}", path.display()))?.into_rgb16();
+    let image = image::open(path)
+        .map_err(|e| format!("{}: {e}", path.display()))?
+        .into_rgb16();
     let gamma = gamma_of(path)?;
     Ok(Linear {
         width: image.width(),
@@ -224,20 +265,33 @@ fn read_16(path: &Path) -> Result<Linear, String> {
 
 /// The gamma of the stage whose reference is `path`.
 fn gamma_of(path: &Path) -> Result<f64, String> {
-    let name = path.file_stem().and_then(|s| s.to_str()).unwrap_or_default();
-    let stage = stages().find(|s| s.name == name).ok_or(format!("no stage {name}"))?;
-    let scene = stage.scene(&Overrides::default()).map_err(|e| e.to_string())?;
+    let name = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .unwrap_or_default();
+    let stage = stages()
+        .find(|s| s.name == name)
+        .ok_or(format!("no stage {name}"))?;
+    let scene = stage
+        .scene(&Overrides::default())
+        .map_err(|e| e.to_string())?;
     Ok(f64::from(scene.settings.gamma))
 }
 
 fn read_8(path: &Path) -> Result<RgbImage, String> {
-    Ok(image::open(path).map_err(|e| format!("{}: {e}", path.display()))?.into_rgb8())
+    Ok(image::open(path)
+        .map_err(|e| format!("{}: {e}", path.display()))?
+        .into_rgb8())
 }
 
 /// A linear picture as the display shows it, 8 bits.
 fn to_rgb8(linear: &Linear, gamma: Real) -> RgbImage {
     let g = f64::from(gamma);
-    let rgb = linear.values.iter().map(|v| v.max(0.0).powf(1.0 / g).round().min(255.0) as u8).collect();
+    let rgb = linear
+        .values
+        .iter()
+        .map(|v| v.max(0.0).powf(1.0 / g).round().min(255.0) as u8)
+        .collect();
     RgbImage::from_raw(linear.width, linear.height, rgb).expect("width x height pixels")
 }
 
@@ -248,7 +302,11 @@ fn to_rgb16(film: &Film, gamma: Real) -> ImageBuffer<Rgb<u16>, Vec<u16>> {
         .pixels
         .iter()
         .flat_map(|p| p.to_array())
-        .map(|v| (f64::from(v).max(0.0).powf(1.0 / g).min(255.0) * 256.0).round().min(65535.0) as u16)
+        .map(|v| {
+            (f64::from(v).max(0.0).powf(1.0 / g).min(255.0) * 256.0)
+                .round()
+                .min(65535.0) as u16
+        })
         .collect();
     ImageBuffer::from_raw(film.width, film.height, values).expect("width x height pixels")
 }

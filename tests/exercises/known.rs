@@ -1,5 +1,8 @@
 //! Known answers: comparisons that say what was given and what was expected.
 
+// Some helpers serve only later sessions' checks.
+#![allow(dead_code)]
+
 use raycourse::maths::{Real, Vec3};
 
 /// A check's result: `Err` says what went wrong, in the book's notation.
@@ -13,14 +16,22 @@ pub fn ensure(holds: bool, why: impl FnOnce() -> String) -> Outcome {
 /// `gave` within `tolerance` of `expected`.
 pub fn close(what: &str, gave: Real, expected: Real, tolerance: Real) -> Outcome {
     ensure((gave - expected).abs() <= tolerance, || {
-        format!("{what}: gave {}, expected {} (within {tolerance})", num(gave), num(expected))
+        format!(
+            "{what}: gave {}, expected {} (within {tolerance})",
+            num(gave),
+            num(expected)
+        )
     })
 }
 
 /// `gave` within `tolerance` of `expected`, component by component.
 pub fn close_vec(what: &str, gave: Vec3, expected: Vec3, tolerance: Real) -> Outcome {
     ensure((gave - expected).abs().max_element() <= tolerance, || {
-        format!("{what}: gave {}, expected {} (within {tolerance})", vec(gave), vec(expected))
+        format!(
+            "{what}: gave {}, expected {} (within {tolerance})",
+            vec(gave),
+            vec(expected)
+        )
     })
 }
 
@@ -28,7 +39,11 @@ pub fn close_vec(what: &str, gave: Vec3, expected: Vec3, tolerance: Real) -> Out
 pub fn num(x: Real) -> String {
     let text = format!("{x:.4}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" { "0".into() } else { text.into() }
+    if text == "-0" {
+        "0".into()
+    } else {
+        text.into()
+    }
 }
 
 /// A vector as the book writes it: `(0, 0.5, -1)`.

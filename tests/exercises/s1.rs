@@ -5,8 +5,8 @@ use std::path::Path;
 use raycourse::camera::Camera;
 use raycourse::geometry::{Ray, Sphere};
 use raycourse::lights::PointLight;
-use raycourse::maths::{Colour, PI, Real, Vec3};
 use raycourse::materials::Material;
+use raycourse::maths::{Colour, PI, Real, Vec3};
 use raycourse::scene::Scene;
 use raycourse::{Overrides, parse_scene};
 
@@ -49,16 +49,25 @@ fn pixel_direction() -> Outcome {
     let cases = [
         ((0, 0), Vec3::new(-1.5, 0.5, -1.0), "top left"),
         ((1, 3), Vec3::new(1.5, -0.5, -1.0), "bottom right"),
-        ((0, 2), Vec3::new(0.5, 0.5, -1.0), "top, right of the centre"),
+        (
+            (0, 2),
+            Vec3::new(0.5, 0.5, -1.0),
+            "top, right of the centre",
+        ),
     ];
     for ((row, column), expected, place) in cases {
         let gave = camera.pixel_direction(row, column);
         ensure(gave.length() > 0.0 && gave.is_finite(), || {
-            format!("pixel (row {row}, column {column}) gave the direction {}", vec(gave))
+            format!(
+                "pixel (row {row}, column {column}) gave the direction {}",
+                vec(gave)
+            )
         })?;
         // Any length is right: only the direction matters.
         close_vec(
-            &format!("the direction through pixel (row {row}, column {column}), the {place} of a 4 x 2 image with a 90-degree field of view, normalised"),
+            &format!(
+                "the direction through pixel (row {row}, column {column}), the {place} of a 4 x 2 image with a 90-degree field of view, normalised"
+            ),
             gave.normalize(),
             expected.normalize(),
             1e-5,
@@ -89,8 +98,20 @@ fn sphere_distance() -> Outcome {
         ("in front", Vec3::new(0.0, 0.0, -5.0), 1.0, z, Some(4.0)),
         ("around the eye", Vec3::ZERO, 2.0, z, Some(2.0)),
         ("behind the eye", Vec3::new(0.0, 0.0, 5.0), 1.0, z, None),
-        ("beside the ray, 2.24 from its line", Vec3::new(0.0, 0.0, -5.0), 1.0, Vec3::new(0.0, 0.5, -1.0), None),
-        ("on an oblique ray", Vec3::new(0.0, 3.0, -4.0), 1.0, Vec3::new(0.0, 0.6, -0.8), Some(4.0)),
+        (
+            "beside the ray, 2.24 from its line",
+            Vec3::new(0.0, 0.0, -5.0),
+            1.0,
+            Vec3::new(0.0, 0.5, -1.0),
+            None,
+        ),
+        (
+            "on an oblique ray",
+            Vec3::new(0.0, 3.0, -4.0),
+            1.0,
+            Vec3::new(0.0, 0.6, -0.8),
+            Some(4.0),
+        ),
     ];
     for (what, centre, radius, direction, expected) in cases {
         let ray = Ray::new(Vec3::ZERO, direction);
@@ -132,9 +153,14 @@ fn nearest_sphere() -> Outcome {
     );
     let ray = Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0));
     let gave = room.nearest_sphere(&ray);
-    ensure(gave.is_some_and(|(t, i)| i == 1 && (t - 4.0).abs() < 1e-4), || {
-        format!("spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {gave:?}, expected sphere 1 at t = 4")
-    })?;
+    ensure(
+        gave.is_some_and(|(t, i)| i == 1 && (t - 4.0).abs() < 1e-4),
+        || {
+            format!(
+                "spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {gave:?}, expected sphere 1 at t = 4"
+            )
+        },
+    )?;
     let up = Ray::new(Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0));
     let gave = room.nearest_sphere(&up);
     ensure(gave.is_none(), || {
@@ -154,13 +180,28 @@ fn lambert() -> Outcome {
     let up = Vec3::new(0.0, 1.0, 0.0);
     let cases = [
         ("facing the light 10 away", Vec3::ZERO, up, albedo),
-        ("tilted by 45 degrees", Vec3::ZERO, Vec3::new(1.0, 1.0, 0.0).normalize(), albedo / (2.0 as Real).sqrt()),
-        ("facing the light 20 away", Vec3::new(0.0, -10.0, 0.0), up, albedo / 4.0),
+        (
+            "tilted by 45 degrees",
+            Vec3::ZERO,
+            Vec3::new(1.0, 1.0, 0.0).normalize(),
+            albedo / (2.0 as Real).sqrt(),
+        ),
+        (
+            "facing the light 20 away",
+            Vec3::new(0.0, -10.0, 0.0),
+            up,
+            albedo / 4.0,
+        ),
         ("facing away", Vec3::ZERO, -up, Colour::ZERO),
     ];
     for (what, point, normal, expected) in cases {
         close_vec(
-            &format!("albedo {} at {}, normal {}, {what}, under a light of power 400 pi^2 at (0, 10, 0)", vec(albedo), vec(point), vec(normal)),
+            &format!(
+                "albedo {} at {}, normal {}, {what}, under a light of power 400 pi^2 at (0, 10, 0)",
+                vec(albedo),
+                vec(point),
+                vec(normal)
+            ),
             light.lambert(point, normal, albedo),
             expected,
             1e-4,

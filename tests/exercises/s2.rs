@@ -68,16 +68,32 @@ fn gamma() -> Outcome {
 
 /// The hit of a ray from the eye on a sphere of radius 1 at distance 5, and of a
 /// wall-sized sphere (radius 990, 10 away) like the rooms' walls.
-fn hits() -> Vec<(&'static str, raycourse::geometry::Sphere, raycourse::geometry::Hit)> {
+fn hits() -> Vec<(
+    &'static str,
+    raycourse::geometry::Sphere,
+    raycourse::geometry::Hit,
+)> {
     [
-        ("a sphere of radius 1 at (0, 0, -5)", Vec3::new(0.0, 0.0, -5.0), 1.0, Vec3::new(0.05, 0.1, -1.0)),
-        ("a wall, a sphere of radius 990 at (0, 0, -1000)", Vec3::new(0.0, 0.0, -1000.0), 990.0, Vec3::new(0.3, -0.2, -1.0)),
+        (
+            "a sphere of radius 1 at (0, 0, -5)",
+            Vec3::new(0.0, 0.0, -5.0),
+            1.0,
+            Vec3::new(0.05, 0.1, -1.0),
+        ),
+        (
+            "a wall, a sphere of radius 990 at (0, 0, -1000)",
+            Vec3::new(0.0, 0.0, -1000.0),
+            990.0,
+            Vec3::new(0.3, -0.2, -1.0),
+        ),
     ]
     .into_iter()
     .map(|(what, centre, radius, direction)| {
         let ball = sphere(centre, radius);
         let ray = Ray::new(Vec3::ZERO, direction);
-        let t = ball.intersect(&ray).expect("the checks' rays hit their spheres");
+        let t = ball
+            .intersect(&ray)
+            .expect("the checks' rays hit their spheres");
         (what, ball, ball.hit_at(&ray, t, 0))
     })
     .collect()
@@ -93,16 +109,28 @@ fn spawn() -> Outcome {
         let inward = hit.spawn(-outward);
         for (way, ray) in [("out", out), ("in", inward)] {
             ensure(ray.origin.distance(hit.point) < 1e-3, || {
-                format!("on {what}, the ray going {way} starts at {}, {} from the hit point {}: expected a start within 1e-3", vec(ray.origin), ray.origin.distance(hit.point), vec(hit.point))
+                format!(
+                    "on {what}, the ray going {way} starts at {}, {} from the hit point {}: expected a start within 1e-3",
+                    vec(ray.origin),
+                    ray.origin.distance(hit.point),
+                    vec(hit.point)
+                )
             })?;
         }
         let again = ball.intersect(&out);
         ensure(again.is_none(), || {
-            format!("on {what}, a ray leaving outwards from the hit point meets the sphere again at {}: expected no hit (its origin must be pushed off the surface, outwards)", maybe(again))
+            format!(
+                "on {what}, a ray leaving outwards from the hit point meets the sphere again at {}: expected no hit (its origin must be pushed off the surface, outwards)",
+                maybe(again)
+            )
         })?;
         let through = ball.intersect(&inward);
         ensure(through.is_some_and(|t| t > 1e-3), || {
-            format!("on {what}, a ray going into the sphere from the hit point gave {}: expected the far side, about {} away (its origin must be pushed off the surface, inwards)", maybe(through), 2.0 * ball.radius)
+            format!(
+                "on {what}, a ray going into the sphere from the hit point gave {}: expected the far side, about {} away (its origin must be pushed off the surface, inwards)",
+                maybe(through),
+                2.0 * ball.radius
+            )
         })?;
     }
     Ok(())
@@ -120,9 +148,18 @@ fn spawn_towards() -> Outcome {
             Vec3::new(3.0, 4.0, 12.0) / 13.0,
             1e-4,
         )?;
-        close(&format!("on {what}, the distance to that light"), distance, 13.0, 1e-3)?;
+        close(
+            &format!("on {what}, the distance to that light"),
+            distance,
+            13.0,
+            1e-3,
+        )?;
         ensure(ray.origin.distance(hit.point) < 1e-3, || {
-            format!("on {what}, the shadow ray starts at {}, not near the hit point {}", vec(ray.origin), vec(hit.point))
+            format!(
+                "on {what}, the shadow ray starts at {}, not near the hit point {}",
+                vec(ray.origin),
+                vec(hit.point)
+            )
         })?;
     }
     Ok(())
@@ -134,11 +171,24 @@ fn mirror() -> Outcome {
     let up = Vec3::new(0.0, 1.0, 0.0);
     let cases = [
         (Vec3::new(0.48, -0.6, 0.64), up, Vec3::new(0.48, 0.6, 0.64)),
-        (Vec3::new(0.0, 0.0, -1.0), Vec3::new(0.0, 0.0, 1.0), Vec3::new(0.0, 0.0, 1.0)),
-        (Vec3::new(1.0, -1.0, 0.0).normalize(), Vec3::new(-1.0, 1.0, 0.0).normalize(), Vec3::new(-1.0, 1.0, 0.0).normalize()),
+        (
+            Vec3::new(0.0, 0.0, -1.0),
+            Vec3::new(0.0, 0.0, 1.0),
+            Vec3::new(0.0, 0.0, 1.0),
+        ),
+        (
+            Vec3::new(1.0, -1.0, 0.0).normalize(),
+            Vec3::new(-1.0, 1.0, 0.0).normalize(),
+            Vec3::new(-1.0, 1.0, 0.0).normalize(),
+        ),
     ];
     for (d, n, expected) in cases {
-        close_vec(&format!("d = {} reflected about N = {}", vec(d), vec(n)), reflect(d, n), expected, 1e-5)?;
+        close_vec(
+            &format!("d = {} reflected about N = {}", vec(d), vec(n)),
+            reflect(d, n),
+            expected,
+            1e-5,
+        )?;
     }
     Ok(())
 }
@@ -155,10 +205,27 @@ fn glass() -> Outcome {
     };
     let third = 1.0 / 3.0;
     let cases = [
-        ("30 degrees, air into glass", at(30.0), 1.0 / 1.5, Some(Vec3::new(third, -(8.0 as Real / 9.0).sqrt(), 0.0))),
-        ("straight in", at(0.0), 1.0 / 1.5, Some(Vec3::new(0.0, -1.0, 0.0))),
+        (
+            "30 degrees, air into glass",
+            at(30.0),
+            1.0 / 1.5,
+            Some(Vec3::new(third, -(8.0 as Real / 9.0).sqrt(), 0.0)),
+        ),
+        (
+            "straight in",
+            at(0.0),
+            1.0 / 1.5,
+            Some(Vec3::new(0.0, -1.0, 0.0)),
+        ),
         ("45 degrees, glass into air", at(45.0), 1.5, None),
-        ("40 degrees, glass into air", at(40.0), 1.5, Some(at((1.5 * (40.0 as Real).to_radians().sin()).asin().to_degrees()))),
+        (
+            "40 degrees, glass into air",
+            at(40.0),
+            1.5,
+            Some(at((1.5 * (40.0 as Real).to_radians().sin())
+                .asin()
+                .to_degrees())),
+        ),
     ];
     for (what, d, eta, expected) in cases {
         let gave = refract(d, n, eta);
@@ -169,7 +236,12 @@ fn glass() -> Outcome {
         };
         let show = |v: Option<Vec3>| v.map_or("none (total internal reflection)".into(), vec);
         ensure(right, || {
-            format!("{what}: d = {}, N = (0, 1, 0), eta = n1 / n2 = {eta}: gave {}, expected {}", vec(d), show(gave), show(expected))
+            format!(
+                "{what}: d = {}, N = (0, 1, 0), eta = n1 / n2 = {eta}: gave {}, expected {}",
+                vec(d),
+                show(gave),
+                show(expected)
+            )
         })?;
     }
     Ok(())

@@ -56,7 +56,12 @@ fn cosine_direction() -> Outcome {
         [w.z, w.z * w.z, w.x, w.y, w.x * w.x]
     });
     if let Some((u1, u2, w)) = worst {
-        return Err(format!("(u1, u2) = ({}, {}) gave {}: expected a unit vector with z >= 0", num(u1), num(u2), vec(w)));
+        return Err(format!(
+            "(u1, u2) = ({}, {}) gave {}: expected a unit vector with z >= 0",
+            num(u1),
+            num(u2),
+            vec(w)
+        ));
     }
     close("the mean of cos(theta) = z", z, 2.0 / 3.0, 0.01).map_err(|e| {
         format!("{e}; uniform directions would give 1/2: the density must be cos(theta) / pi")
@@ -85,7 +90,12 @@ fn frame() -> Outcome {
         let what = format!("the frame of N = {}", vec(n));
         close_vec(&format!("{what}: its axis N"), f.n, n, 1e-6)?;
         for (name, t) in [("T1", f.t1), ("T2", f.t2)] {
-            close(&format!("{what}: the length of {name} = {}", vec(t)), t.length(), 1.0, 1e-5)?;
+            close(
+                &format!("{what}: the length of {name} = {}", vec(t)),
+                t.length(),
+                1.0,
+                1e-5,
+            )?;
             close(&format!("{what}: {name} . N"), t.dot(n), 0.0, 1e-5)?;
         }
         close(&format!("{what}: T1 . T2"), f.t1.dot(f.t2), 0.0, 1e-5)?;
@@ -119,7 +129,10 @@ fn indirect_bounce() -> Outcome {
         / n as Real;
     let right = (mean / albedo - Colour::ONE).abs().max_element() < 0.03;
     ensure(right, || {
-        format!("inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo (0.8, 0.4, 0.2) gave {}, expected (0.8, 0.4, 0.2): the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi", vec(mean))
+        format!(
+            "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo (0.8, 0.4, 0.2) gave {}, expected (0.8, 0.4, 0.2): the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
+            vec(mean)
+        )
     })
 }
 
@@ -131,7 +144,11 @@ fn gaussian() -> Outcome {
     let sigma = 0.5;
     let [x, y, x2, y2, xy, within] = grid_mean(GRID, |u1, u2| {
         let (x, y) = sample_gaussian(u1, u2, sigma);
-        let inside = if x * x + y * y <= sigma * sigma { 1.0 } else { 0.0 };
+        let inside = if x * x + y * y <= sigma * sigma {
+            1.0
+        } else {
+            0.0
+        };
         [x, y, x * x, y * y, x * y, inside]
     });
     close("the mean of x", x, 0.0, 0.01)?;
@@ -139,11 +156,18 @@ fn gaussian() -> Outcome {
     close("the mean of x^2, sigma = 0.5", x2, 0.25, 0.01)?;
     close("the mean of y^2, sigma = 0.5", y2, 0.25, 0.01)?;
     close("the mean of x y", xy, 0.0, 0.01)?;
-    close("the share of offsets within sigma of the centre", within, 0.3935, 0.01)?;
+    close(
+        "the share of offsets within sigma of the centre",
+        within,
+        0.3935,
+        0.01,
+    )?;
     for u1 in [0.0, 1.0 - Real::EPSILON] {
         let (x, y) = sample_gaussian(u1, 0.3, sigma);
         ensure(x.is_finite() && y.is_finite(), || {
-            format!("u1 = {u1}: gave ({x}, {y}), expected finite numbers (the logarithm of 1 - u1, never of 0)")
+            format!(
+                "u1 = {u1}: gave ({x}, {y}), expected finite numbers (the logarithm of 1 - u1, never of 0)"
+            )
         })?;
     }
     Ok(())

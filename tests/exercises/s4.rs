@@ -55,9 +55,19 @@ fn cone_sample() -> Outcome {
         [w.z, w.x, w.y]
     });
     if let Some((u1, u2, w)) = wrong {
-        return Err(format!("the cone of half-angle 30 degrees around +z, (u1, u2) = ({}, {}): gave {}, expected a unit vector with z >= cos(30) = 0.866", num(u1), num(u2), vec(w)));
+        return Err(format!(
+            "the cone of half-angle 30 degrees around +z, (u1, u2) = ({}, {}): gave {}, expected a unit vector with z >= cos(30) = 0.866",
+            num(u1),
+            num(u2),
+            vec(w)
+        ));
     }
-    close("the cone of half-angle 30 degrees: the mean of cos(theta)", z, 0.9330, 0.002)?;
+    close(
+        "the cone of half-angle 30 degrees: the mean of cos(theta)",
+        z,
+        0.9330,
+        0.002,
+    )?;
     close("the mean of x", x, 0.0, 0.005)?;
     close("the mean of y", y, 0.0, 0.005)
 }
@@ -67,9 +77,24 @@ fn cone_sample() -> Outcome {
 fn cone_pdf() -> Outcome {
     let cone = Cone::from_sin2(0.25);
     let inside = 1.0 / (2.0 * PI * (1.0 - (0.75 as Real).sqrt()));
-    close("the density of the 30-degree cone at cos(theta) = 0.95", cone.pdf(0.95), inside, 1e-3)?;
-    close("the density of the 30-degree cone at cos(theta) = 1", cone.pdf(1.0), inside, 1e-3)?;
-    close("the density of the 30-degree cone at cos(theta) = 0.5, outside it", cone.pdf(0.5), 0.0, 1e-9)
+    close(
+        "the density of the 30-degree cone at cos(theta) = 0.95",
+        cone.pdf(0.95),
+        inside,
+        1e-3,
+    )?;
+    close(
+        "the density of the 30-degree cone at cos(theta) = 1",
+        cone.pdf(1.0),
+        inside,
+        1e-3,
+    )?;
+    close(
+        "the density of the 30-degree cone at cos(theta) = 0.5, outside it",
+        cone.pdf(0.5),
+        0.0,
+        1e-9,
+    )
 }
 
 /// Uniform on the unit disk: inside it, `E[x] = E[y] = 0`, `E[r^2] = 1/2`, and a
@@ -85,7 +110,11 @@ fn disk() -> Outcome {
         [x, y, r2, if r2 <= 0.25 { 1.0 } else { 0.0 }]
     });
     if let Some((x, y)) = outside {
-        return Err(format!("gave the point ({}, {}), outside the unit disk", num(x), num(y)));
+        return Err(format!(
+            "gave the point ({}, {}), outside the unit disk",
+            num(x),
+            num(y)
+        ));
     }
     close("the mean of x", x, 0.0, 0.01)?;
     close("the mean of y", y, 0.0, 0.01)?;
@@ -110,17 +139,32 @@ fn thin_lens() -> Outcome {
     for k in 0..draws {
         let mut rng = pixel_rng(7, k);
         let (origin, direction) = lens.refocus(Vec3::ZERO, Vec3::new(1.0, 2.0, -4.0), &mut rng);
-        ensure(origin.z.abs() < 1e-6 && origin.truncate().length() <= 0.5 + 1e-6, || {
-            format!("a ray through the lens of radius 0.5 starts at {}: expected a point of the lens (z = 0, within 0.5 of the eye)", vec(origin))
-        })?;
+        ensure(
+            origin.z.abs() < 1e-6 && origin.truncate().length() <= 0.5 + 1e-6,
+            || {
+                format!(
+                    "a ray through the lens of radius 0.5 starts at {}: expected a point of the lens (z = 0, within 0.5 of the eye)",
+                    vec(origin)
+                )
+            },
+        )?;
         let s = (focus.z - origin.z) / direction.z;
         close_vec(
-            &format!("the ray from {} along {}, where it crosses the focus plane z = -10", vec(origin), vec(direction)),
+            &format!(
+                "the ray from {} along {}, where it crosses the focus plane z = -10",
+                vec(origin),
+                vec(direction)
+            ),
             origin + s * direction,
             focus,
             1e-3,
         )?;
         spread += origin.truncate().length_squared();
     }
-    close("the mean of x^2 + y^2 over the starts on the lens", spread / draws as Real, 0.125, 0.01)
+    close(
+        "the mean of x^2 + y^2 over the starts on the lens",
+        spread / draws as Real,
+        0.125,
+        0.01,
+    )
 }

@@ -31,23 +31,71 @@ fn triangle() -> Outcome {
     let (a, b, c) = (Vec3::ZERO, Vec3::X, Vec3::Y);
     let down = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
-        ("straight down through (0.25, 0.5)", Vec3::new(0.25, 0.5, 1.0), down, 10.0, Some((1.0, 0.25, 0.5))),
-        ("straight up from below through (0.2, 0.2)", Vec3::new(0.2, 0.2, -2.0), -down, 10.0, Some((2.0, 0.2, 0.2))),
-        ("down through (0.6, 0.6), past the long edge", Vec3::new(0.6, 0.6, 1.0), down, 10.0, None),
-        ("down through (0.25, 0.5) with t_max = 0.5", Vec3::new(0.25, 0.5, 1.0), down, 0.5, None),
-        ("parallel to the triangle's plane", Vec3::new(-1.0, 0.2, 0.0), Vec3::X, 10.0, None),
-        ("pointing away, up from above", Vec3::new(0.25, 0.5, 1.0), -down, 10.0, None),
+        (
+            "straight down through (0.25, 0.5)",
+            Vec3::new(0.25, 0.5, 1.0),
+            down,
+            10.0,
+            Some((1.0, 0.25, 0.5)),
+        ),
+        (
+            "straight up from below through (0.2, 0.2)",
+            Vec3::new(0.2, 0.2, -2.0),
+            -down,
+            10.0,
+            Some((2.0, 0.2, 0.2)),
+        ),
+        (
+            "down through (0.6, 0.6), past the long edge",
+            Vec3::new(0.6, 0.6, 1.0),
+            down,
+            10.0,
+            None,
+        ),
+        (
+            "down through (0.25, 0.5) with t_max = 0.5",
+            Vec3::new(0.25, 0.5, 1.0),
+            down,
+            0.5,
+            None,
+        ),
+        (
+            "parallel to the triangle's plane",
+            Vec3::new(-1.0, 0.2, 0.0),
+            Vec3::X,
+            10.0,
+            None,
+        ),
+        (
+            "pointing away, up from above",
+            Vec3::new(0.25, 0.5, 1.0),
+            -down,
+            10.0,
+            None,
+        ),
     ];
     for (what, origin, direction, t_max, expected) in cases {
         let gave = intersect_triangle(&Ray::new(origin, direction), a, b, c, t_max);
         let right = match (gave, expected) {
-            (Some(h), Some((t, beta, gamma))) => (h.t - t).abs() < 1e-5 && (h.beta - beta).abs() < 1e-5 && (h.gamma - gamma).abs() < 1e-5,
+            (Some(h), Some((t, beta, gamma))) => {
+                (h.t - t).abs() < 1e-5
+                    && (h.beta - beta).abs() < 1e-5
+                    && (h.gamma - gamma).abs() < 1e-5
+            }
             (None, None) => true,
             _ => false,
         };
-        let show = |h: Option<(Real, Real, Real)>| h.map_or("no hit".into(), |(t, b, g)| format!("t = {}, b_B = {}, b_C = {}", num(t), num(b), num(g)));
+        let show = |h: Option<(Real, Real, Real)>| {
+            h.map_or("no hit".into(), |(t, b, g)| {
+                format!("t = {}, b_B = {}, b_C = {}", num(t), num(b), num(g))
+            })
+        };
         ensure(right, || {
-            format!("the triangle (0, 0, 0), (1, 0, 0), (0, 1, 0), a ray {what}: gave {}, expected {}", show(gave.map(|h| (h.t, h.beta, h.gamma))), show(expected))
+            format!(
+                "the triangle (0, 0, 0), (1, 0, 0), (0, 1, 0), a ray {what}: gave {}, expected {}",
+                show(gave.map(|h| (h.t, h.beta, h.gamma))),
+                show(expected)
+            )
         })?;
     }
     Ok(())
@@ -64,14 +112,62 @@ fn slab() -> Outcome {
     };
     let z = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
-        ("from (0, 0, 5) along -z", Vec3::new(0.0, 0.0, 5.0), z, 100.0, Some(4.0)),
-        ("from (-5, 0.5, 0) along +x", Vec3::new(-5.0, 0.5, 0.0), Vec3::X, 100.0, Some(4.0)),
-        ("from (5, 0, 0) along -x", Vec3::new(5.0, 0.0, 0.0), -Vec3::X, 100.0, Some(4.0)),
-        ("from inside, at (0.5, 0, 0), along -z", Vec3::new(0.5, 0.0, 0.0), z, 100.0, Some(0.0)),
-        ("from (3, 0, 5) along -z, beside the box", Vec3::new(3.0, 0.0, 5.0), z, 100.0, None),
-        ("from (0, 0, 5) along +z, away from the box", Vec3::new(0.0, 0.0, 5.0), -z, 100.0, None),
-        ("from (0, 0, 5) along -z with t_max = 3", Vec3::new(0.0, 0.0, 5.0), z, 3.0, None),
-        ("from (4, 4, 0) along (-1, -1, 0) / sqrt 2", Vec3::new(4.0, 4.0, 0.0), Vec3::new(-1.0, -1.0, 0.0), 100.0, Some(3.0 * (2.0 as Real).sqrt())),
+        (
+            "from (0, 0, 5) along -z",
+            Vec3::new(0.0, 0.0, 5.0),
+            z,
+            100.0,
+            Some(4.0),
+        ),
+        (
+            "from (-5, 0.5, 0) along +x",
+            Vec3::new(-5.0, 0.5, 0.0),
+            Vec3::X,
+            100.0,
+            Some(4.0),
+        ),
+        (
+            "from (5, 0, 0) along -x",
+            Vec3::new(5.0, 0.0, 0.0),
+            -Vec3::X,
+            100.0,
+            Some(4.0),
+        ),
+        (
+            "from inside, at (0.5, 0, 0), along -z",
+            Vec3::new(0.5, 0.0, 0.0),
+            z,
+            100.0,
+            Some(0.0),
+        ),
+        (
+            "from (3, 0, 5) along -z, beside the box",
+            Vec3::new(3.0, 0.0, 5.0),
+            z,
+            100.0,
+            None,
+        ),
+        (
+            "from (0, 0, 5) along +z, away from the box",
+            Vec3::new(0.0, 0.0, 5.0),
+            -z,
+            100.0,
+            None,
+        ),
+        (
+            "from (0, 0, 5) along -z with t_max = 3",
+            Vec3::new(0.0, 0.0, 5.0),
+            z,
+            3.0,
+            None,
+        ),
+        (
+            "from (4, 4, 0) along (-1, -1, 0) / sqrt 2",
+            Vec3::new(4.0, 4.0, 0.0),
+            Vec3::new(-1.0, -1.0, 0.0),
+            100.0,
+            Some(3.0 * (2.0 as Real).sqrt()),
+        ),
     ];
     for (what, origin, direction, t_max, expected) in cases {
         let ray = Ray::new(origin, direction);
@@ -82,7 +178,12 @@ fn slab() -> Outcome {
             _ => false,
         };
         ensure(right, || {
-            format!("the box from (-1, -1, -1) to (1, 1, 1), a ray {what} (d = {}): gave {}, expected {}", vec(ray.direction), maybe(gave), maybe(expected))
+            format!(
+                "the box from (-1, -1, -1) to (1, 1, 1), a ray {what} (d = {}): gave {}, expected {}",
+                vec(ray.direction),
+                maybe(gave),
+                maybe(expected)
+            )
         })?;
     }
     Ok(())

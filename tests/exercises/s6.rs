@@ -43,13 +43,17 @@ const AS_READ: Placement = Placement {
 /// Spot the cow, 5,856 triangles, as the mesh stages read it.
 fn spot() -> Mesh {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/spot/spot.obj");
-    Mesh::new(&read_obj(&path).expect("assets/spot/spot.obj reads"), &AS_READ)
+    Mesh::new(
+        &read_obj(&path).expect("assets/spot/spot.obj reads"),
+        &AS_READ,
+    )
 }
 
 /// Whether `outer` holds `inner`, to rounding.
 fn holds(outer: &Aabb, inner: &Aabb) -> bool {
     let slack = 1e-9 * (outer.max - outer.min).max_element().max(1.0);
-    (inner.min - outer.min).min_element() >= -slack && (outer.max - inner.max).min_element() >= -slack
+    (inner.min - outer.min).min_element() >= -slack
+        && (outer.max - inner.max).min_element() >= -slack
 }
 
 /// A hierarchy over Spot: every triangle in exactly one leaf, each leaf's box
@@ -62,38 +66,73 @@ fn build() -> Outcome {
     let n = mesh.triangles.len();
     let mut seen = vec![0u32; n];
     for &t in &bvh.order {
-        ensure((t as usize) < n, || format!("Bvh::order holds the triangle number {t}, but Spot has {n}"))?;
+        ensure((t as usize) < n, || {
+            format!("Bvh::order holds the triangle number {t}, but Spot has {n}")
+        })?;
         seen[t as usize] += 1;
     }
     ensure(bvh.order.len() == n && seen.iter().all(|&s| s == 1), || {
-        format!("Bvh::order must list each of Spot's {n} triangles once: it has {} entries", bvh.order.len())
+        format!(
+            "Bvh::order must list each of Spot's {n} triangles once: it has {} entries",
+            bvh.order.len()
+        )
     })?;
-    ensure(!bvh.nodes.is_empty(), || "the hierarchy has no node: node 0 is the root".into())?;
+    ensure(!bvh.nodes.is_empty(), || {
+        "the hierarchy has no node: node 0 is the root".into()
+    })?;
     let (mut leaves, mut covered) = (0, vec![false; n]);
     let mut pending = vec![(0usize, 1usize)];
     while let Some((index, depth)) = pending.pop() {
-        ensure(depth <= 64, || format!("the hierarchy is deeper than 64 levels at node {index}"))?;
-        let node: Node = *bvh.nodes.get(index).ok_or(format!("a node points to node {index}, past the {} nodes", bvh.nodes.len()))?;
+        ensure(depth <= 64, || {
+            format!("the hierarchy is deeper than 64 levels at node {index}")
+        })?;
+        let node: Node = *bvh.nodes.get(index).ok_or(format!(
+            "a node points to node {index}, past the {} nodes",
+            bvh.nodes.len()
+        ))?;
         if node.count > 0 {
             leaves += 1;
             let range = node.first as usize..(node.first + node.count) as usize;
             for slot in range.clone() {
-                ensure(slot < n && !covered[slot], || format!("the leaf at node {index} covers Bvh::order[{}..{}], which another leaf covers too or lies past the end", range.start, range.end))?;
+                ensure(slot < n && !covered[slot], || {
+                    format!(
+                        "the leaf at node {index} covers Bvh::order[{}..{}], which another leaf covers too or lies past the end",
+                        range.start, range.end
+                    )
+                })?;
                 covered[slot] = true;
                 let corners = mesh.corners(bvh.order[slot]);
                 let around = corners.iter().fold(Aabb::EMPTY, |b, &p| b.grow(p));
-                ensure(holds(&node.bounds, &around), || format!("the box of leaf node {index}, {} to {}, does not hold its triangle {}", vec(node.bounds.min), vec(node.bounds.max), bvh.order[slot]))?;
+                ensure(holds(&node.bounds, &around), || {
+                    format!(
+                        "the box of leaf node {index}, {} to {}, does not hold its triangle {}",
+                        vec(node.bounds.min),
+                        vec(node.bounds.max),
+                        bvh.order[slot]
+                    )
+                })?;
             }
         } else {
             for child in [node.first as usize, node.first as usize + 1] {
-                let inner = bvh.nodes.get(child).ok_or(format!("node {index} points to node {child}, past the {} nodes", bvh.nodes.len()))?;
-                ensure(holds(&node.bounds, &inner.bounds), || format!("the box of node {child} sticks out of its parent's, node {index}"))?;
+                let inner = bvh.nodes.get(child).ok_or(format!(
+                    "node {index} points to node {child}, past the {} nodes",
+                    bvh.nodes.len()
+                ))?;
+                ensure(holds(&node.bounds, &inner.bounds), || {
+                    format!("the box of node {child} sticks out of its parent's, node {index}")
+                })?;
                 pending.push((child, depth + 1));
             }
         }
     }
-    ensure(covered.iter().all(|&c| c), || "some entries of Bvh::order are in no leaf".into())?;
-    ensure(leaves >= n / 16, || format!("Spot's {n} triangles end in {leaves} leaves: expected the boxes split until about 4 triangles a leaf"))
+    ensure(covered.iter().all(|&c| c), || {
+        "some entries of Bvh::order are in no leaf".into()
+    })?;
+    ensure(leaves >= n / 16, || {
+        format!(
+            "Spot's {n} triangles end in {leaves} leaves: expected the boxes split until about 4 triangles a leaf"
+        )
+    })
 }
 
 /// A hierarchy made without the exercise's build: each node's triangles halved in
@@ -102,7 +141,10 @@ fn build() -> Outcome {
 /// triangle finds.
 fn halving(mesh: &Mesh) -> Bvh {
     let leaf = |order: &[u32], first: usize, count: usize| Node {
-        bounds: order[first..first + count].iter().flat_map(|&t| mesh.corners(t)).fold(Aabb::EMPTY, Aabb::grow),
+        bounds: order[first..first + count]
+            .iter()
+            .flat_map(|&t| mesh.corners(t))
+            .fold(Aabb::EMPTY, Aabb::grow),
         first: first as u32,
         count: count as u32,
     };
@@ -110,7 +152,11 @@ fn halving(mesh: &Mesh) -> Bvh {
     let mut nodes = vec![leaf(&order, 0, order.len())];
     let mut pending = vec![0];
     while let Some(index) = pending.pop() {
-        let Node { bounds, first, count } = nodes[index];
+        let Node {
+            bounds,
+            first,
+            count,
+        } = nodes[index];
         if count <= 4 {
             continue;
         }
@@ -118,7 +164,11 @@ fn halving(mesh: &Mesh) -> Bvh {
         let children = nodes.len();
         nodes.push(leaf(&order, first, half));
         nodes.push(leaf(&order, first + half, count as usize - half));
-        nodes[index] = Node { bounds, first: children as u32, count: 0 };
+        nodes[index] = Node {
+            bounds,
+            first: children as u32,
+            count: 0,
+        };
         pending.extend([children, children + 1]);
     }
     Bvh { nodes, order }
@@ -130,21 +180,43 @@ fn halving(mesh: &Mesh) -> Bvh {
 fn walk() -> Outcome {
     let mesh = spot();
     let bvh = halving(&mesh);
-    let (centre, size) = (mesh.bounds.centre(), (mesh.bounds.max - mesh.bounds.min).length());
+    let (centre, size) = (
+        mesh.bounds.centre(),
+        (mesh.bounds.max - mesh.bounds.min).length(),
+    );
     for k in 0..400 {
         let (a, b) = (k as Real * 2.399_963, 1.0 - 2.0 * (k as Real + 0.5) / 400.0);
-        let from = centre + size * Vec3::new(a.cos() * (1.0 - b * b).sqrt(), b, a.sin() * (1.0 - b * b).sqrt());
-        let aim = centre + 0.4 * (mesh.bounds.max - mesh.bounds.min) * Vec3::new((k as Real * 0.7).sin(), (k as Real * 1.3).cos(), (k as Real * 2.1).sin());
+        let from = centre
+            + size
+                * Vec3::new(
+                    a.cos() * (1.0 - b * b).sqrt(),
+                    b,
+                    a.sin() * (1.0 - b * b).sqrt(),
+                );
+        let aim = centre
+            + 0.4
+                * (mesh.bounds.max - mesh.bounds.min)
+                * Vec3::new(
+                    (k as Real * 0.7).sin(),
+                    (k as Real * 1.3).cos(),
+                    (k as Real * 2.1).sin(),
+                );
         let ray = Ray::new(from, aim - from);
         let gave = bvh.nearest(&mesh, &ray, Real::INFINITY).map(|h| h.at.t);
-        let expected = BruteForce.nearest(&mesh, &ray, Real::INFINITY).map(|h| h.at.t);
+        let expected = BruteForce
+            .nearest(&mesh, &ray, Real::INFINITY)
+            .map(|h| h.at.t);
         let right = match (gave, expected) {
             (Some(t), Some(e)) => (t - e).abs() <= 1e-9 * e.max(1.0),
             (None, None) => true,
             _ => false,
         };
         ensure(right, || {
-            format!("ray {k} at Spot, from {} along {}: the walk gave {gave:?}, testing every triangle {expected:?}", vec(ray.origin), vec(ray.direction))
+            format!(
+                "ray {k} at Spot, from {} along {}: the walk gave {gave:?}, testing every triangle {expected:?}",
+                vec(ray.origin),
+                vec(ray.direction)
+            )
         })?;
     }
     Ok(())
@@ -171,13 +243,44 @@ fn smooth_normal() -> Outcome {
     let centre = Vec3::new(0.270_598, 0.270_598, 0.923_880);
     let cases = [
         ("at A, weights (1, 0, 0)", [1.0, 0.0, 0.0], Vec3::Z, Vec3::Z),
-        ("halfway along BC, weights (0, 0.5, 0.5)", [0.0, 0.5, 0.5], Vec3::Z, middle),
-        ("at the centre, weights (1/3, 1/3, 1/3)", [third, third, third], Vec3::Z, centre),
-        ("at the centre, seen from below", [third, third, third], -Vec3::Z, -centre),
+        (
+            "halfway along BC, weights (0, 0.5, 0.5)",
+            [0.0, 0.5, 0.5],
+            Vec3::Z,
+            middle,
+        ),
+        (
+            "at the centre, weights (1/3, 1/3, 1/3)",
+            [third, third, third],
+            Vec3::Z,
+            centre,
+        ),
+        (
+            "at the centre, seen from below",
+            [third, third, third],
+            -Vec3::Z,
+            -centre,
+        ),
     ];
     for (what, weights, geometric, expected) in cases {
-        close_vec(&format!("the triangle's shading normal {what}"), mesh.smooth_normal(0, weights, geometric), expected, 1e-5)?;
+        close_vec(
+            &format!("the triangle's shading normal {what}"),
+            mesh.smooth_normal(0, weights, geometric),
+            expected,
+            1e-5,
+        )?;
     }
-    let flat = Mesh::new(&ObjData { normals: vec![], ..data }, &AS_READ);
-    close_vec("a triangle without vertex normals", flat.smooth_normal(0, [third; 3], Vec3::Z), Vec3::Z, 1e-9)
+    let flat = Mesh::new(
+        &ObjData {
+            normals: vec![],
+            ..data
+        },
+        &AS_READ,
+    );
+    close_vec(
+        "a triangle without vertex normals",
+        flat.smooth_normal(0, [third; 3], Vec3::Z),
+        Vec3::Z,
+        1e-9,
+    )
 }

@@ -41,17 +41,55 @@ fn lookup() -> Outcome {
         filter,
     };
     let cases = [
-        (Filter::Nearest, [0.25, 0.75], RED, "the top-left texel's centre"),
-        (Filter::Nearest, [0.75, 0.25], Colour::ONE, "the bottom-right texel's centre"),
-        (Filter::Nearest, [0.9, 0.9], GREEN, "near the top-right corner"),
-        (Filter::Nearest, [1.25, 0.75], RED, "one texture to the right of the top-left centre"),
-        (Filter::Bilinear, [0.25, 0.75], RED, "the top-left texel's centre"),
-        (Filter::Bilinear, [0.5, 0.5], Colour::splat(0.5), "the texture's centre"),
-        (Filter::Bilinear, [0.5, 0.75], Colour::new(0.5, 0.5, 0.0), "between the two top texels"),
+        (
+            Filter::Nearest,
+            [0.25, 0.75],
+            RED,
+            "the top-left texel's centre",
+        ),
+        (
+            Filter::Nearest,
+            [0.75, 0.25],
+            Colour::ONE,
+            "the bottom-right texel's centre",
+        ),
+        (
+            Filter::Nearest,
+            [0.9, 0.9],
+            GREEN,
+            "near the top-right corner",
+        ),
+        (
+            Filter::Nearest,
+            [1.25, 0.75],
+            RED,
+            "one texture to the right of the top-left centre",
+        ),
+        (
+            Filter::Bilinear,
+            [0.25, 0.75],
+            RED,
+            "the top-left texel's centre",
+        ),
+        (
+            Filter::Bilinear,
+            [0.5, 0.5],
+            Colour::splat(0.5),
+            "the texture's centre",
+        ),
+        (
+            Filter::Bilinear,
+            [0.5, 0.75],
+            Colour::new(0.5, 0.5, 0.0),
+            "between the two top texels",
+        ),
     ];
     for (filter, uv, expected, what) in cases {
         close_vec(
-            &format!("a 2 x 2 texture (red, green / blue, white), {filter:?} lookup at (u, v) = ({}, {}), {what}", uv[0], uv[1]),
+            &format!(
+                "a 2 x 2 texture (red, green / blue, white), {filter:?} lookup at (u, v) = ({}, {}), {what}",
+                uv[0], uv[1]
+            ),
             texture(filter).colour(uv),
             expected,
             1e-6,
@@ -68,13 +106,39 @@ fn lookup() -> Outcome {
 fn orientation() -> Outcome {
     let h = (0.5 as Real).sqrt();
     let cases = [
-        (Vec3::new(0.0, 0.0, 10.0), 0.0, Vec3::new(0.0, 0.0, 10.0), [Vec3::X, Vec3::Y, Vec3::Z]),
-        (Vec3::new(10.0, 0.0, 0.0), 0.0, Vec3::new(10.0, 0.0, 0.0), [-Vec3::Z, Vec3::Y, Vec3::X]),
-        (Vec3::new(0.0, 0.0, 10.0), 45.0, Vec3::new(0.0, 10.0 * h, 10.0 * h), [Vec3::X, Vec3::new(0.0, h, -h), Vec3::new(0.0, h, h)]),
+        (
+            Vec3::new(0.0, 0.0, 10.0),
+            0.0,
+            Vec3::new(0.0, 0.0, 10.0),
+            [Vec3::X, Vec3::Y, Vec3::Z],
+        ),
+        (
+            Vec3::new(10.0, 0.0, 0.0),
+            0.0,
+            Vec3::new(10.0, 0.0, 0.0),
+            [-Vec3::Z, Vec3::Y, Vec3::X],
+        ),
+        (
+            Vec3::new(0.0, 0.0, 10.0),
+            45.0,
+            Vec3::new(0.0, 10.0 * h, 10.0 * h),
+            [Vec3::X, Vec3::new(0.0, h, -h), Vec3::new(0.0, h, h)],
+        ),
     ];
     for (eye, plunge, expected_eye, [right, up, back]) in cases {
-        let what = format!("the camera at {} looking at the origin, up (0, 1, 0), plunge {plunge} degrees", vec(eye));
-        let Some((gave_eye, Orientation::Aimed { right: r, up: u, back: b })) = aim(eye, Vec3::ZERO, Vec3::Y, plunge) else {
+        let what = format!(
+            "the camera at {} looking at the origin, up (0, 1, 0), plunge {plunge} degrees",
+            vec(eye)
+        );
+        let Some((
+            gave_eye,
+            Orientation::Aimed {
+                right: r,
+                up: u,
+                back: b,
+            },
+        )) = aim(eye, Vec3::ZERO, Vec3::Y, plunge)
+        else {
             return Err(format!("{what}: gave no aimed orientation"));
         };
         close_vec(&format!("{what}: the eye"), gave_eye, expected_eye, 1e-4)?;
@@ -83,5 +147,9 @@ fn orientation() -> Outcome {
         close_vec(&format!("{what}: back"), b, back, 1e-5)?;
     }
     let down = aim(Vec3::new(0.0, 10.0, 0.0), Vec3::ZERO, Vec3::Y, 0.0);
-    ensure(down.is_none(), || format!("the camera at (0, 10, 0) looking straight down along up: gave {down:?}, expected none (no right-hand direction)"))
+    ensure(down.is_none(), || {
+        format!(
+            "the camera at (0, 10, 0) looking straight down along up: gave {down:?}, expected none (no right-hand direction)"
+        )
+    })
 }

@@ -177,7 +177,10 @@ fn later_session_materials_name_their_feature() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            format!("room.toml: key `spheres[0].material`: a mirror material {}", comes_with(2))
+            format!(
+                "room.toml: key `spheres[0].material`: a mirror material {}",
+                comes_with(2)
+            )
         );
     }
 }
@@ -191,7 +194,10 @@ fn later_session_settings_name_their_feature() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            format!("room.toml: key `render.shadows`: shadow rays {}", comes_with(2))
+            format!(
+                "room.toml: key `render.shadows`: shadow rays {}",
+                comes_with(2)
+            )
         );
     }
 }
@@ -205,7 +211,10 @@ fn light_sampling_needs_a_sphere_light() {
          [light] a radius"
             .to_owned()
     } else {
-        format!("room.toml: key `render.light_sampling`: light sampling {}", comes_with(4))
+        format!(
+            "room.toml: key `render.light_sampling`: light sampling {}",
+            comes_with(4)
+        )
     };
     assert_eq!(err.to_string(), expected);
 }
@@ -230,7 +239,10 @@ fn a_sphere_light_needs_session_four_and_no_shadow_rays() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            format!("room.toml: key `light.radius`: a sphere light {}", comes_with(4))
+            format!(
+                "room.toml: key `light.radius`: a sphere light {}",
+                comes_with(4)
+            )
         );
     }
 }
@@ -244,7 +256,10 @@ fn antialiasing_needs_session_three() {
     } else {
         assert_eq!(
             result.unwrap_err().to_string(),
-            format!("room.toml: key `camera.antialiasing`: antialiasing {}", comes_with(3))
+            format!(
+                "room.toml: key `camera.antialiasing`: antialiasing {}",
+                comes_with(3)
+            )
         );
     }
 }
@@ -295,7 +310,10 @@ fn samplers_are_named_and_noise_is_positive() {
     } else {
         assert_eq!(
             sobol.unwrap_err().to_string(),
-            format!("room.toml: key `render.sampler`: a choice of sampler {}", comes_with(3))
+            format!(
+                "room.toml: key `render.sampler`: a choice of sampler {}",
+                comes_with(3)
+            )
         );
     }
 }

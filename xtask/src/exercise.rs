@@ -104,7 +104,13 @@ struct Finder<'s> {
 }
 
 impl Finder<'_> {
-    fn note(&mut self, attrs: &[Attribute], sig: &syn::Signature, start: proc_macro2::Span, body: &Block) {
+    fn note(
+        &mut self,
+        attrs: &[Attribute],
+        sig: &syn::Signature,
+        start: proc_macro2::Span,
+        body: &Block,
+    ) {
         if let Some(mut marker) = attrs.iter().find_map(doc_marker) {
             marker.function = match &self.within {
                 Some(within) => format!("{within}::{}", sig.ident),
@@ -187,7 +193,10 @@ fn found(text: &str) -> Result<Vec<Found>, String> {
 
 /// `text` with the body of each exercise that `chosen` picks replaced by its stub.
 pub fn stub(text: &str, chosen: &dyn Fn(&Marker) -> bool, how: Stub) -> Result<String, String> {
-    let mut found: Vec<Found> = found(text)?.into_iter().filter(|f| chosen(&f.marker)).collect();
+    let mut found: Vec<Found> = found(text)?
+        .into_iter()
+        .filter(|f| chosen(&f.marker))
+        .collect();
     found.sort_by_key(|f| std::cmp::Reverse(f.body.start));
     let mut text = text.to_owned();
     for f in found {
@@ -205,7 +214,10 @@ pub fn stub(text: &str, chosen: &dyn Fn(&Marker) -> bool, how: Stub) -> Result<S
         };
         text.replace_range(f.body.clone(), &body);
         if how == Stub::Todo {
-            text.insert_str(f.signature, &format!("#[allow(unused_variables)]\n{indent}"));
+            text.insert_str(
+                f.signature,
+                &format!("#[allow(unused_variables)]\n{indent}"),
+            );
         }
     }
     Ok(text)
@@ -262,7 +274,11 @@ pub fn all(root: &Path) -> Result<Vec<(Marker, String)>, String> {
     let mut all = vec![];
     for file in rust_files_below(&root.join("src"))? {
         let text = fs::read_to_string(&file).map_err(|e| format!("{}: {e}", file.display()))?;
-        let relative = file.strip_prefix(root).unwrap_or(&file).display().to_string();
+        let relative = file
+            .strip_prefix(root)
+            .unwrap_or(&file)
+            .display()
+            .to_string();
         for marker in markers(&text).map_err(|e| format!("{}: {e}", file.display()))? {
             all.push((marker, relative.clone()));
         }
@@ -273,7 +289,10 @@ pub fn all(root: &Path) -> Result<Vec<(Marker, String)>, String> {
 
 /// The course's order of an exercise number: session, then number.
 pub fn order(id: &str) -> (u32, u32) {
-    let mut parts = id.trim_start_matches('s').split('.').map(|p| p.parse().unwrap_or(0));
+    let mut parts = id
+        .trim_start_matches('s')
+        .split('.')
+        .map(|p| p.parse().unwrap_or(0));
     (parts.next().unwrap_or(0), parts.next().unwrap_or(0))
 }
 
@@ -301,7 +320,10 @@ mod tests {
 
     #[test]
     fn a_marker_gives_its_number_title_and_section() {
-        let marker = Marker::parse(" Exercise s3.1, the cosine-weighted direction: book session 3, \"Indirect lighting\".").unwrap();
+        let marker = Marker::parse(
+            " Exercise s3.1, the cosine-weighted direction: book session 3, \"Indirect lighting\".",
+        )
+        .unwrap();
         assert_eq!(marker.id, "s3.1");
         assert_eq!(marker.session, 3);
         assert_eq!(marker.title, "the cosine-weighted direction");
@@ -326,7 +348,10 @@ mod tests {
     #[test]
     fn a_switched_stub_keeps_the_body_behind_the_environment() {
         let switched = stub(TEXT, &|_| true, Stub::Switch).unwrap();
-        assert!(switched.contains("is_some_and(|s| s == \"s1.2\")"), "{switched}");
+        assert!(
+            switched.contains("is_some_and(|s| s == \"s1.2\")"),
+            "{switched}"
+        );
         assert!(switched.contains("let s = ray.origin"));
         syn::parse_file(&switched).unwrap();
     }
@@ -335,7 +360,10 @@ mod tests {
     fn the_unused_allowance_follows_the_module_doc() {
         let text = "//! A module.\n\nuse std::fmt;\n";
         let allowed = allow_unused(text);
-        assert!(allowed.starts_with("//! A module.\n\n// The exercises"), "{allowed}");
+        assert!(
+            allowed.starts_with("//! A module.\n\n// The exercises"),
+            "{allowed}"
+        );
         assert!(allowed.ends_with("#![allow(unused_imports, dead_code)]\n\nuse std::fmt;\n"));
         syn::parse_file(&allowed).unwrap();
     }

@@ -53,7 +53,13 @@ fn run(args: &[String]) -> Result<(), String> {
         ["exercise", n, dir, ref more @ ..] => exercise(session(n)?, Path::new(dir), more),
         ["exercises"] => {
             for (marker, file) in exercise::all(&root())? {
-                println!("{}\t{}\t{}\t{}", marker.id, marker.function, file, marker.test_name());
+                println!(
+                    "{}\t{}\t{}\t{}",
+                    marker.id,
+                    marker.function,
+                    file,
+                    marker.test_name()
+                );
             }
             Ok(())
         }
@@ -66,7 +72,11 @@ fn run(args: &[String]) -> Result<(), String> {
 /// `cargo xtask exercise sN DIR [--only sN.K] [--switch]`.
 fn exercise(session: u32, dir: &Path, more: &[&str]) -> Result<(), String> {
     let only = match more.iter().position(|a| *a == "--only") {
-        Some(i) => Some(*more.get(i + 1).ok_or("--only needs an exercise, such as s3.2")?),
+        Some(i) => Some(
+            *more
+                .get(i + 1)
+                .ok_or("--only needs an exercise, such as s3.2")?,
+        ),
         None => None,
     };
     let how = if more.contains(&"--switch") {

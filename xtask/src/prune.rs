@@ -198,9 +198,11 @@ impl Pruner<'_> {
     }
 }
 
-/// The attributes of an expression that can stand as a statement.
+/// The attributes of an expression that can stand as a statement or an element.
 fn expr_attrs(expr: &Expr) -> &[Attribute] {
     match expr {
+        Expr::Lit(e) => &e.attrs,
+        Expr::Field(e) => &e.attrs,
         Expr::If(e) => &e.attrs,
         Expr::Call(e) => &e.attrs,
         Expr::MethodCall(e) => &e.attrs,
@@ -321,7 +323,7 @@ impl<'ast> Visit<'ast> for Pruner<'_> {
                     range: self.whole(range, Place::InList),
                     with: MARK.to_string(),
                 });
-            } else {
+            } else if self.gate(expr_attrs(element), element.span(), Place::InList) {
                 self.visit_expr(element);
             }
         }
@@ -428,6 +430,15 @@ mod tests {
         );
         let at1 = view(text, 1);
         assert!(at1.contains("let a") && !at1.contains("let b"));
+    }
+
+    #[test]
+    fn a_gated_array_element_goes_with_its_comma() {
+        let text = "const ALL: &[u8] = &[\n    a::ONE,\n    #[cfg(feature = \"s2\")]\n    b::TWO,\n    #[cfg(feature = \"s3\")]\n    3,\n];\n";
+        assert_eq!(
+            view(text, 2),
+            "const ALL: &[u8] = &[\n    a::ONE,\n    b::TWO,\n];\n"
+        );
     }
 
     #[test]

@@ -45,7 +45,8 @@ pub fn write_exercises(root: &Path, choice: &Choice, out: &Path) -> Result<Vec<M
         (Stub::Todo, None) => m.session == choice.session,
         (Stub::Switch, None) => true,
     };
-    let stubbed = stub_folder(&out.join("src"), &chosen, choice.how)?;
+    let mut stubbed = stub_folder(&out.join("src"), &chosen, choice.how)?;
+    stubbed.sort_by_key(|m| crate::exercise::order(&m.id));
     if stubbed.is_empty() {
         return Err(match choice.only {
             Some(id) => format!("no exercise {id} in session {}", choice.session),
@@ -55,7 +56,8 @@ pub fn write_exercises(root: &Path, choice: &Choice, out: &Path) -> Result<Vec<M
     let manifest = out.join("Cargo.toml");
     let text = fs::read_to_string(&manifest).map_err(|e| e.to_string())?;
     fs::write(&manifest, exercise_manifest(&text)?).map_err(|e| e.to_string())?;
-    fs::write(out.join("README.md"), readme(choice.session, &stubbed)).map_err(|e| e.to_string())?;
+    fs::write(out.join("README.md"), readme(choice.session, &stubbed))
+        .map_err(|e| e.to_string())?;
     Ok(stubbed)
 }
 
@@ -77,7 +79,10 @@ fn exercise_manifest(text: &str) -> Result<String, String> {
     doc["bin"] = toml_edit::Item::ArrayOfTables(bins);
     let mut marked = toml_edit::Table::new();
     marked["exercises"] = toml_edit::value(true);
-    doc["package"]["metadata"]["raycourse"] = toml_edit::Item::Table(marked);
+    let mut metadata = toml_edit::Table::new();
+    metadata.set_implicit(true);
+    metadata["raycourse"] = toml_edit::Item::Table(marked);
+    doc["package"]["metadata"] = toml_edit::Item::Table(metadata);
     Ok(doc.to_string())
 }
 
