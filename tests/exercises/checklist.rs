@@ -142,6 +142,12 @@ fn caught(run: impl FnOnce() -> Outcome) -> Verdict {
     }
 }
 
+/// The course's order of an exercise number: session, then number.
+fn order(id: &str) -> (u32, u32) {
+    let mut parts = id[1..].split('.').map(|p| p.parse().unwrap_or(0));
+    (parts.next().unwrap_or(0), parts.next().unwrap_or(0))
+}
+
 /// The exercise whose stub panicked with `message`, if it was one.
 fn stub_of(message: &str) -> Option<&str> {
     let rest = message.strip_prefix("not yet implemented: exercise ")?;
@@ -182,6 +188,20 @@ fn report(
     match exercise {
         Some(e) => println!("    exercise {}: {why}", describe(e.id, markers)),
         None => println!("    {why}"),
+    }
+    if exercise.is_none() {
+        let mut failing: Vec<&&str> = earlier
+            .iter()
+            .filter(|(_, v)| **v != Verdict::Passed)
+            .map(|(id, _)| id)
+            .collect();
+        failing.sort_by_key(|id| order(id));
+        for id in failing {
+            println!(
+                "    exercise {} fails: the image needs it right first",
+                describe(id, markers)
+            );
+        }
     }
     for need in exercise.map_or(&[][..], |e| e.needs) {
         if earlier.get(need).is_some_and(|v| *v != Verdict::Passed) {

@@ -5,7 +5,7 @@ use raycourse::geometry::Ray;
 use raycourse::integrator::Tracer;
 use raycourse::maths::frame::Frame;
 use raycourse::maths::sampling::{sample_cosine_hemisphere, sample_gaussian};
-use raycourse::maths::{Colour, Real, Vec3};
+use raycourse::maths::{Colour, PI, Real, Vec3};
 
 use crate::checklist::Exercise;
 use crate::known::{Outcome, close, close_vec, ensure, grid_mean, num, vec};
@@ -130,10 +130,26 @@ fn indirect_bounce() -> Outcome {
     let right = (mean / albedo - Colour::ONE).abs().max_element() < 0.03;
     ensure(right, || {
         format!(
-            "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo (0.8, 0.4, 0.2) gave {}, expected (0.8, 0.4, 0.2): the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
-            vec(mean)
+            "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo (0.8, 0.4, 0.2) gave {}, expected (0.8, 0.4, 0.2){}: the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
+            vec(mean),
+            weight_hint((mean / albedo).element_sum() / 3.0)
         )
     })
+}
+
+/// What a bounce that brings back `ratio` times the right light most likely got
+/// wrong in its weight.
+fn weight_hint(ratio: Real) -> &'static str {
+    let near = |target: Real| (ratio / target - 1.0).abs() < 0.03;
+    if near(2.0 / 3.0) {
+        "; 2/3 of it is the mean cosine: the cosine is counted although the direction's density already holds it"
+    } else if near(1.0 / PI) {
+        "; 1/pi of it: the BRDF's 1/pi is counted although the density's pi cancels it"
+    } else if near(2.0) {
+        "; twice it: the weight divides by the density of a uniform direction, 1 / (2 pi), not of a cosine-weighted one"
+    } else {
+        ""
+    }
 }
 
 /// Box-Muller: two independent normal numbers, so over the grid `E[x] = E[y] = 0`,
