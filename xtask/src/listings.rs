@@ -5,6 +5,10 @@
 //! session N - 1, end with `// +`. The views are written afresh into
 //! `target/book-views/` each time the book is built, so a listing shows exactly
 //! what a student has after that session: no gate, no later session's code.
+//!
+//! `{{#exercises sN}}` becomes the table of session N's exercises, read from their
+//! markers in the view's code (see [`crate::exercise`]) and their checklist lines
+//! from `tests/exercises/sN.rs`.
 
 use std::collections::HashSet;
 use std::io::Read;
@@ -65,7 +69,63 @@ fn fill(content: &str, views: &Path, seen: &mut HashSet<String>) -> Result<Strin
         out += &listing(directive, views)?;
         rest = &rest[start + end + 2..];
     }
+    exercise_tables(&(out + rest), views)
+}
+
+/// `content` with each `{{#exercises sN}}` replaced by session N's table.
+fn exercise_tables(content: &str, views: &Path) -> Result<String, String> {
+    let mut out = String::new();
+    let mut rest = content;
+    while let Some(start) = rest.find("{{#exercises ") {
+        let end = rest[start..]
+            .find("}}")
+            .ok_or("an {{#exercises ...}} is not closed")?;
+        out += &rest[..start];
+        let session = rest[start + "{{#exercises ".len()..start + end].trim();
+        out += &exercise_table(crate::session(session)?, views)?;
+        rest = &rest[start + end + 2..];
+    }
     Ok(out + rest)
+}
+
+/// The table of session `n`'s exercises: number, what it computes, the function
+/// and its file, the checklist's line.
+fn exercise_table(n: u32, views: &Path) -> Result<String, String> {
+    let view = views.join(format!("s{n}"));
+    let checks = std::fs::read_to_string(view.join(format!("tests/exercises/s{n}.rs")))
+        .map_err(|e| format!("the checklist of session {n}: {e}"))?;
+    let mut rows: Vec<(crate::exercise::Marker, String)> = vec![];
+    for file in crate::exercise::rust_files_below(&view.join("src"))? {
+        let text = std::fs::read_to_string(&file).map_err(|e| e.to_string())?;
+        let relative = file.strip_prefix(&view).unwrap_or(&file).display().to_string();
+        for marker in crate::exercise::markers(&text)? {
+            if marker.session == n {
+                rows.push((marker, relative.clone()));
+            }
+        }
+    }
+    rows.sort_by_key(|(m, _)| crate::exercise::order(&m.id));
+    let mut table = "| exercise | what you write | function | file | checklist line |\n|---|---|---|---|---|\n".to_owned();
+    let mut i = 0;
+    while i < rows.len() {
+        let id = rows[i].0.id.clone();
+        let group: Vec<&(crate::exercise::Marker, String)> = rows[i..].iter().take_while(|(m, _)| m.id == id).collect();
+        let functions: Vec<String> = group.iter().map(|(m, _)| format!("`{}`", m.function)).collect();
+        let prefix = format!("name: \"{}_", id.replace('.', "_"));
+        let line = checks
+            .lines()
+            .find_map(|l| l.trim().strip_prefix("name: \"").filter(|_| l.trim().starts_with(&prefix)))
+            .map(|l| l.trim_end_matches("\",").to_owned())
+            .ok_or_else(|| format!("exercise {id} has no line in tests/exercises/s{n}.rs"))?;
+        table += &format!(
+            "| {id} | {} | {} | `{}` | `{line}` |\n",
+            group[0].0.title,
+            functions.join(" and "),
+            group[0].1
+        );
+        i += group.len();
+    }
+    Ok(table)
 }
 
 /// The listing of `sN FILE ANCHOR`: caption, then the code.
