@@ -114,7 +114,7 @@ fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
 
 /// Runs a check, a panic caught.
 fn attempt(check: fn() -> Outcome) -> Verdict {
-    caught(|| check())
+    caught(check)
 }
 
 /// Checks a stage's image, a panic caught.

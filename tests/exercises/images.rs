@@ -17,7 +17,7 @@ use image::{ImageBuffer, Rgb, RgbImage};
 use raycourse::check::compare::{
     Linear, brightness_ratio, compare_blocks, compare_pixels, displayed,
 };
-use raycourse::maths::Real;
+use raycourse::maths::{Real, to_double};
 use raycourse::{Film, Overrides, Stage, render, stages};
 
 use crate::known::Outcome;
@@ -200,12 +200,12 @@ fn gamma_hint(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Option<Str
     let remap = |power: f64| {
         let mut image = reference.clone();
         for v in image.iter_mut() {
-            let linear = f64::from(*v).powf(f64::from(gamma));
+            let linear = f64::from(*v).powf(to_double(gamma));
             *v = linear.powf(power).round().min(255.0) as u8;
         }
         image
     };
-    let g = f64::from(gamma);
+    let g = to_double(gamma);
     if !compare_pixels(yours, &remap(1.0), 2 * TOLERANCE).image_differs {
         Some(format!(
             "it shows the radiance without the display's gamma: a pixel is L^(1/gamma), here gamma = {gamma}"
@@ -275,7 +275,7 @@ fn gamma_of(path: &Path) -> Result<f64, String> {
     let scene = stage
         .scene(&Overrides::default())
         .map_err(|e| e.to_string())?;
-    Ok(f64::from(scene.settings.gamma))
+    Ok(to_double(scene.settings.gamma))
 }
 
 fn read_8(path: &Path) -> Result<RgbImage, String> {
@@ -286,7 +286,7 @@ fn read_8(path: &Path) -> Result<RgbImage, String> {
 
 /// A linear picture as the display shows it, 8 bits.
 fn to_rgb8(linear: &Linear, gamma: Real) -> RgbImage {
-    let g = f64::from(gamma);
+    let g = to_double(gamma);
     let rgb = linear
         .values
         .iter()
@@ -297,13 +297,13 @@ fn to_rgb8(linear: &Linear, gamma: Real) -> RgbImage {
 
 /// A film as a 16-bit image of its displayed value: `min(255, L^(1/gamma)) * 256`.
 fn to_rgb16(film: &Film, gamma: Real) -> ImageBuffer<Rgb<u16>, Vec<u16>> {
-    let g = f64::from(gamma);
+    let g = to_double(gamma);
     let values = film
         .pixels
         .iter()
         .flat_map(|p| p.to_array())
         .map(|v| {
-            (f64::from(v).max(0.0).powf(1.0 / g).min(255.0) * 256.0)
+            (to_double(v).max(0.0).powf(1.0 / g).min(255.0) * 256.0)
                 .round()
                 .min(65535.0) as u16
         })

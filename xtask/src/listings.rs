@@ -97,7 +97,11 @@ fn exercise_table(n: u32, views: &Path) -> Result<String, String> {
     let mut rows: Vec<(crate::exercise::Marker, String)> = vec![];
     for file in crate::exercise::rust_files_below(&view.join("src"))? {
         let text = std::fs::read_to_string(&file).map_err(|e| e.to_string())?;
-        let relative = file.strip_prefix(&view).unwrap_or(&file).display().to_string();
+        let relative = file
+            .strip_prefix(&view)
+            .unwrap_or(&file)
+            .display()
+            .to_string();
         for marker in crate::exercise::markers(&text)? {
             if marker.session == n {
                 rows.push((marker, relative.clone()));
@@ -105,16 +109,26 @@ fn exercise_table(n: u32, views: &Path) -> Result<String, String> {
         }
     }
     rows.sort_by_key(|(m, _)| crate::exercise::order(&m.id));
-    let mut table = "| exercise | what you write | function | file | checklist line |\n|---|---|---|---|---|\n".to_owned();
+    let mut table =
+        "| exercise | what you write | function | file | checklist line |\n|---|---|---|---|---|\n"
+            .to_owned();
     let mut i = 0;
     while i < rows.len() {
         let id = rows[i].0.id.clone();
-        let group: Vec<&(crate::exercise::Marker, String)> = rows[i..].iter().take_while(|(m, _)| m.id == id).collect();
-        let functions: Vec<String> = group.iter().map(|(m, _)| format!("`{}`", m.function)).collect();
+        let group: Vec<&(crate::exercise::Marker, String)> =
+            rows[i..].iter().take_while(|(m, _)| m.id == id).collect();
+        let functions: Vec<String> = group
+            .iter()
+            .map(|(m, _)| format!("`{}`", m.function))
+            .collect();
         let prefix = format!("name: \"{}_", id.replace('.', "_"));
         let line = checks
             .lines()
-            .find_map(|l| l.trim().strip_prefix("name: \"").filter(|_| l.trim().starts_with(&prefix)))
+            .find_map(|l| {
+                l.trim()
+                    .strip_prefix("name: \"")
+                    .filter(|_| l.trim().starts_with(&prefix))
+            })
             .map(|l| l.trim_end_matches("\",").to_owned())
             .ok_or_else(|| format!("exercise {id} has no line in tests/exercises/s{n}.rs"))?;
         table += &format!(
