@@ -9,6 +9,10 @@
 //! `{{#exercises sN}}` becomes the table of session N's exercises, read from their
 //! markers in the view's code (see [`crate::exercise`]) and their checklist lines
 //! from `tests/exercises/sN.rs`.
+//!
+//! An image alone on its line, `![Figure 1: a white disk](figures/white-disk.png)`,
+//! becomes a figure whose text is shown under it as its caption (and kept as the
+//! image's `alt` text).
 
 use std::collections::HashSet;
 use std::io::Read;
@@ -69,7 +73,44 @@ fn fill(content: &str, views: &Path, seen: &mut HashSet<String>) -> Result<Strin
         out += &listing(directive, views)?;
         rest = &rest[start + end + 2..];
     }
-    exercise_tables(&(out + rest), views)
+    Ok(captioned(&exercise_tables(&(out + rest), views)?))
+}
+
+/// `content` with each image alone on its line made a `<figure>` with a visible
+/// `<figcaption>` (outside code blocks).
+fn captioned(content: &str) -> String {
+    let mut fenced = false;
+    let mut out = String::new();
+    for line in content.split_inclusive('\n') {
+        if line.trim_start().starts_with("```") {
+            fenced = !fenced;
+        }
+        match image_line(line.trim()).filter(|_| !fenced) {
+            Some((text, source)) => {
+                let text = escape(text);
+                out += &format!(
+                    "\n<figure>\n<img src=\"{source}\" alt=\"{text}\">\n<figcaption>{text}</figcaption>\n</figure>\n\n"
+                );
+            }
+            None => out += line,
+        }
+    }
+    out
+}
+
+/// The text and source of a line that is one Markdown image, `![text](source)`.
+fn image_line(line: &str) -> Option<(&str, &str)> {
+    let inner = line.strip_prefix("![")?.strip_suffix(')')?;
+    let (text, source) = inner.rsplit_once("](")?;
+    (!source.contains(' ')).then_some((text, source))
+}
+
+/// Text made safe for HTML, inside an attribute or an element.
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
 }
 
 /// `content` with each `{{#exercises sN}}` replaced by session N's table.
@@ -256,7 +297,15 @@ fn mark_gained(before: &str, after: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::mark_gained;
+    use super::{captioned, mark_gained};
+
+    #[test]
+    fn an_image_alone_on_its_line_gets_a_visible_caption() {
+        let text = "Before.\n\n![Figure 1: a <white> disk](figures/white-disk.png)\n\n```text\n![not](an image)\n```\n";
+        let out = captioned(text);
+        assert!(out.contains("<img src=\"figures/white-disk.png\" alt=\"Figure 1: a &lt;white&gt; disk\">\n<figcaption>Figure 1: a &lt;white&gt; disk</figcaption>"), "{out}");
+        assert!(out.contains("```text\n![not](an image)\n```"));
+    }
 
     #[test]
     fn only_the_lines_a_session_added_are_marked() {
