@@ -27,6 +27,7 @@ pub fn disk_pdf(x: Real, y: Real) -> Real {
 }
 // ANCHOR_END: disk
 
+// ANCHOR: lens
 /// Where camera rays start.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Lens {
@@ -47,6 +48,7 @@ impl Lens {
         }
     }
 }
+// ANCHOR_END: lens
 
 /// A thin lens of radius `aperture` focused at distance `focus` in front of the eye.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -6,6 +6,7 @@ use crate::materials::Material;
 use crate::maths::frame::Frame;
 use crate::maths::{Colour, PI, Real, Vec3};
 
+// ANCHOR: light_struct
 /// A sphere that emits the same radiance from every point of its surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SphereLight {
@@ -20,6 +21,7 @@ pub struct SphereLight {
     /// Index of the sphere in the scene that is the light's body.
     pub object: usize,
 }
+// ANCHOR_END: light_struct
 
 // ANCHOR: cone
 /// The cone of directions around `+z` that meet a sphere seen under the half-angle
@@ -100,6 +102,7 @@ impl SphereLight {
     }
     // ANCHOR_END: sphere_light
 
+    // ANCHOR: light_cone
     /// The cone under which the light is seen from `point`, whose half-angle has
     /// `sin^2(theta_max) = R^2 / r^2`, with `r` the distance from `point` to the
     /// light's centre, or `None` from inside the light.
@@ -117,6 +120,7 @@ impl SphereLight {
         let local = cone.sample(u1, u2);
         Some((frame.to_world(local), cone.pdf(local.z)))
     }
+    // ANCHOR_END: light_cone
 }
 
 #[cfg(test)]

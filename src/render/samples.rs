@@ -3,6 +3,7 @@
 use crate::integrator::Tracer;
 use crate::maths::{Colour, Real, pixel_rng};
 
+// ANCHOR: sample_mean
 /// The running mean of a pixel's samples. A sample that is not finite (a NaN from a
 /// degenerate computation, an infinity) is dropped and counted, rather than
 /// poisoning the pixel or being written as black.
@@ -44,6 +45,7 @@ impl SampleMean {
         self.count
     }
 }
+// ANCHOR_END: sample_mean
 
 // ANCHOR: samples
 /// The radiance of pixel (`row`, `column`): the mean of the scene's samples, each
