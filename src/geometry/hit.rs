@@ -50,6 +50,7 @@ impl Hit {
     // ANCHOR_END: facing
 }
 
+// ANCHOR: offset_along
 /// The offset of a new ray's origin from a hit point whose coordinates are within
 /// `error` of the surface with unit normal `normal`: along the normal by
 /// `d = |N| . error`, the largest distance from the surface that the error box
@@ -57,3 +58,4 @@ impl Hit {
 pub fn offset_along(normal: Vec3, error: Vec3) -> Vec3 {
     normal.abs().dot(error) * normal
 }
+// ANCHOR_END: offset_along

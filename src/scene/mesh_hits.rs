@@ -33,6 +33,7 @@ impl Scene {
     }
     // ANCHOR_END: nearest_mesh
 
+    // ANCHOR: nearest_distance
     /// The distance to the nearest object, sphere or mesh, that `ray` hits and that
     /// object's index: what [`Scene::intersect`] finds, without the hit record a
     /// shadow ray has no use for.
@@ -43,4 +44,5 @@ impl Scene {
         }
         nearest
     }
+    // ANCHOR_END: nearest_distance
 }
