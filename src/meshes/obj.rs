@@ -114,7 +114,7 @@ fn merge(models: &[tobj::Model], texture: Option<std::path::PathBuf>) -> Result<
 /// Checks every line that tobj would read before it sees the file, so that a
 /// mistake is reported by its line in words a student knows: a vertex needs 3
 /// coordinates (4 with a weight, 6 with a colour), a texture coordinate 2, a normal
-/// 3, each a number; a face needs at least 3 corners, each naming a `v`, `vt` or
+/// 3, each a finite number; a face needs at least 3 corners, each naming a `v`, `vt` or
 /// `vn` line already read.
 pub fn check_lines(text: &str) -> Result<(), String> {
     let mut counts = [0i64; 3];
@@ -142,8 +142,10 @@ pub fn check_lines(text: &str) -> Result<(), String> {
     Ok(())
 }
 
-/// Checks the numbers of a `v`, `vt` or `vn` line: each must parse, and there must be
-/// one of the `allowed` counts; counts the line in `read`.
+/// Checks the numbers of a `v`, `vt` or `vn` line: each must parse as a finite
+/// number (`nan`, `inf` and values beyond single precision are refused: tobj would
+/// read them without a word), and there must be one of the `allowed` counts; counts
+/// the line in `read`.
 fn check_numbers<'a>(
     words: impl Iterator<Item = &'a str>,
     rule: &str,
@@ -152,8 +154,12 @@ fn check_numbers<'a>(
 ) -> Result<(), String> {
     let mut found = 0;
     for word in words {
-        word.parse::<f32>()
+        let value = word
+            .parse::<f32>()
             .map_err(|_| format!("`{word}` is not a number"))?;
+        if !value.is_finite() {
+            return Err(format!("`{word}` is not a finite number"));
+        }
         found += 1;
     }
     *read += 1;
