@@ -69,6 +69,7 @@ pub trait SpreadNumbers: std::fmt::Debug + Send {
     fn pair(&mut self) -> (Real, Real);
 }
 
+// ANCHOR: splitmix64
 /// SplitMix64's finaliser: a bijection of `u64` that scatters nearby inputs.
 fn splitmix64(x: u64) -> u64 {
     let mut z = x.wrapping_add(0x9E37_79B9_7F4A_7C15);
@@ -76,6 +77,7 @@ fn splitmix64(x: u64) -> u64 {
     z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
     z ^ (z >> 31)
 }
+// ANCHOR_END: splitmix64
 
 #[cfg(test)]
 mod tests {
