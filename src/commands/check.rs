@@ -32,7 +32,8 @@ struct CheckArgs {
     #[arg(required_unless_present = "all")]
     image: Option<PathBuf>,
     /// Grade a folder of images named after the stages (`glass.png`, ...): a table,
-    /// and a CSV grading sheet.
+    /// and a CSV grading sheet; or a class, a folder of such folders (one per
+    /// student): a row per student and a column per stage.
     #[arg(long, conflicts_with_all = ["stage", "image"])]
     all: Option<PathBuf>,
     /// Write a picture of the differences (differing pixels or blocks in red).
@@ -188,28 +189,22 @@ fn stage_command(stage: &Stage) -> String {
     format!("s{} {}", stage.session, stage.name)
 }
 
-/// Grades the images of the folder `dir`: one row per stage of the build.
+/// Grades the images of the folder `dir`: one row per stage of the build; or, for a
+/// class (a folder of students' folders and no stage image of its own), one row per
+/// student.
 fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
     if !dir.is_dir() {
         return Err(Failure::Input(format!("{}: not a folder", dir.display())));
     }
+    let students = students(dir)?;
+    if !students.is_empty() && image_of_any_stage(dir).is_none() {
+        return grade_class(args, dir, &students);
+    }
+    let rows = grade_folder(args, dir)?;
     let mut csv =
         String::from("stage,session,figure,verdict,differing,red,green,blue,noise,hint\n");
-    let mut all_match = true;
     println!("{:<17} {:<10} hint", "stage", "verdict");
-    for stage in stages() {
-        let found = ["png", "jpg", "jpeg"]
-            .iter()
-            .map(|e| dir.join(format!("{}.{e}", stage.name)))
-            .find(|p| p.exists());
-        let row = match found {
-            None => Row::missing(),
-            Some(path) => match read_image(&path) {
-                Err(failure) => Row::unreadable(failure),
-                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?),
-            },
-        };
-        all_match &= row.verdict == "matches" || row.verdict == "missing";
+    for (stage, row) in &rows {
         println!("{:<17} {:<10} {}", stage.name, row.verdict, row.hint);
         csv += &format!(
             "{},{},{},{},{}\n",
@@ -223,7 +218,103 @@ fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
     let sheet = args.csv.clone().unwrap_or_else(|| dir.join("grades.csv"));
     write(&sheet, csv.as_bytes())?;
     println!("grading sheet -> {}", sheet.display());
-    if all_match {
+    finish(rows.iter().all(|(_, row)| row.passes()))
+}
+
+/// Grades every student's folder of the class in `dir`: a table of verdicts on the
+/// terminal, and one CSV row per student with, for each stage, the verdict and the
+/// hint.
+fn grade_class(args: &CheckArgs, dir: &Path, students: &[PathBuf]) -> Result<(), Failure> {
+    let mut csv = String::from("student");
+    for stage in stages() {
+        csv += &format!(",{0},{0} hint", stage.name);
+    }
+    csv += "\n";
+    let mut all_pass = true;
+    for folder in students {
+        let name = folder.file_name().unwrap_or_default().to_string_lossy();
+        let rows = grade_folder(args, folder)?;
+        let matching = rows.iter().filter(|(_, r)| r.verdict == "matches").count();
+        let differing: Vec<&str> = rows
+            .iter()
+            .filter(|(_, r)| !r.passes())
+            .map(|(s, _)| s.name)
+            .collect();
+        println!(
+            "{name:<20} {matching:>2} of {} match; differ: {}",
+            rows.len(),
+            if differing.is_empty() {
+                "none".to_owned()
+            } else {
+                differing.join(", ")
+            }
+        );
+        csv += &quoted(&name);
+        for (_, row) in &rows {
+            csv += &format!(",{},{}", row.verdict, quoted(&row.hint));
+        }
+        csv += "\n";
+        all_pass &= rows.iter().all(|(_, row)| row.passes());
+    }
+    let sheet = args.csv.clone().unwrap_or_else(|| dir.join("grades.csv"));
+    write(&sheet, csv.as_bytes())?;
+    println!("grading sheet -> {}", sheet.display());
+    finish(all_pass)
+}
+
+/// Each stage of the build with the row of its image in `dir`.
+fn grade_folder(args: &CheckArgs, dir: &Path) -> Result<Vec<(&'static Stage, Row)>, Failure> {
+    let mut rows = vec![];
+    for stage in stages() {
+        let row = match image_of(dir, stage) {
+            None => Row::missing(),
+            Some(path) => match read_image(&path) {
+                Err(failure) => Row::unreadable(failure),
+                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?),
+            },
+        };
+        rows.push((stage, row));
+    }
+    Ok(rows)
+}
+
+/// The image of `stage` in `dir`: `glass.png`, `glass.jpg` or `glass.jpeg`.
+fn image_of(dir: &Path, stage: &Stage) -> Option<PathBuf> {
+    ["png", "jpg", "jpeg"]
+        .iter()
+        .map(|e| dir.join(format!("{}.{e}", stage.name)))
+        .find(|p| p.exists())
+}
+
+/// The image of any stage in `dir`, if there is one.
+fn image_of_any_stage(dir: &Path) -> Option<PathBuf> {
+    stages().find_map(|stage| image_of(dir, stage))
+}
+
+/// The students' folders of a class folder, sorted by name.
+fn students(dir: &Path) -> Result<Vec<PathBuf>, Failure> {
+    let entries =
+        std::fs::read_dir(dir).map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
+    let mut folders: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_dir() && p.file_name().is_some_and(|n| n != "reference"))
+        .collect();
+    folders.sort();
+    Ok(folders)
+}
+
+/// A CSV field in quotes when it holds a comma or a quote.
+fn quoted(text: &str) -> String {
+    if text.contains([',', '"']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_owned()
+    }
+}
+
+/// Success when every image passed; exit code 1 otherwise.
+fn finish(all_pass: bool) -> Result<(), Failure> {
+    if all_pass {
         Ok(())
     } else {
         std::process::exit(1)
@@ -239,6 +330,11 @@ struct Row {
 }
 
 impl Row {
+    /// Whether the row does not count against the student: a matching image, or none.
+    fn passes(&self) -> bool {
+        self.verdict == "matches" || self.verdict == "missing"
+    }
+
     /// No image of the stage in the folder.
     fn missing() -> Row {
         Row {

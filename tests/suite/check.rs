@@ -481,4 +481,47 @@ fn the_command_answers_with_its_exit_code_and_grades_a_folder() {
             .unwrap()
             .starts_with("stage,session,figure,verdict")
     );
+    grades_a_class(&dir, &check);
+}
+
+/// A class: a folder of students' folders, graded into one sheet, a row per student.
+fn grades_a_class(dir: &tempfile::TempDir, check: &dyn Fn(&[&str]) -> std::process::Output) {
+    for (student, image) in [("alice", "glass.png"), ("bob", "gamma.png")] {
+        let folder = dir.path().join("class").join(student);
+        std::fs::create_dir_all(&folder).unwrap();
+        std::fs::copy(dir.path().join(image), folder.join("glass.png")).unwrap();
+    }
+    let graded = check(&["--all", "class"]);
+    let table = text(&graded.stdout);
+    assert_eq!(graded.status.code(), Some(1), "{table}");
+    assert!(
+        table
+            .lines()
+            .any(|l| l.starts_with("alice") && l.contains("1 of") && l.ends_with("differ: none")),
+        "{table}"
+    );
+    assert!(
+        table
+            .lines()
+            .any(|l| l.starts_with("bob") && l.ends_with("differ: glass")),
+        "{table}"
+    );
+    let sheet = std::fs::read_to_string(dir.path().join("class/grades.csv")).unwrap();
+    let lines: Vec<&str> = sheet.lines().collect();
+    assert_eq!(lines.len(), 3, "{sheet}");
+    assert!(
+        lines[0].starts_with("student,white-disk,white-disk hint,"),
+        "{sheet}"
+    );
+    let glass = lines[0].split(',').position(|c| c == "glass").unwrap();
+    let cell = |row: &str, k: usize| row.split(',').nth(k).unwrap().to_owned();
+    assert_eq!(
+        (cell(lines[1], 0), cell(lines[1], glass)),
+        ("alice".into(), "matches".into())
+    );
+    assert_eq!(
+        (cell(lines[2], glass), cell(lines[2], glass + 1)),
+        ("differs".into(), "no gamma".into())
+    );
+    assert_eq!(cell(lines[2], 1), "missing");
 }
