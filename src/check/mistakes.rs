@@ -92,6 +92,11 @@ pub const MISTAKES: &[Mistake] = &[
         image: light_twice,
     },
     Mistake {
+        name: "bounce limit",
+        hint: "the paths stop too early: a path follows up to `bounces` bounces (the stage's setting), and only then stops; check where your bounce counter is tested and decremented",
+        image: one_bounce,
+    },
+    Mistake {
         name: "bounce weight",
         hint: "the indirect light is off while the direct light is right: the weight of a bounce must match how its direction was drawn (cosine-weighted directions: albedo; uniform ones: 2 albedo cos(theta))",
         image: bounce_weight,
@@ -323,6 +328,21 @@ fn light_twice(c: &Candidates) -> Result<Option<Film>, SceneError> {
     for (a, b) in film.pixels.iter_mut().zip(&direct.pixels) {
         *a += *b;
     }
+    Ok(Some(film))
+}
+
+/// The image of a stage with indirect light whose paths stop after one bounce, as a
+/// bounce counter tested or decremented in the wrong place makes them.
+fn one_bounce(c: &Candidates) -> Result<Option<Film>, SceneError> {
+    let settings = &c.expected.scene.settings;
+    if !settings.indirect || c.expected.deterministic || settings.bounces <= 1 {
+        return Ok(None);
+    }
+    let film = c.variant(|scene| {
+        if let Some(render) = scene.get_mut("render").and_then(toml::Value::as_table_mut) {
+            render.insert("bounces".into(), toml::Value::Integer(1));
+        }
+    })?;
     Ok(Some(film))
 }
 

@@ -181,7 +181,8 @@ type Edit = Box<dyn Fn(&str) -> String>;
 
 /// Mistakes a scene-file edit reproduces: gamma left out or applied twice, a light
 /// pi times too bright or too dark (the 1/pi of the BRDF forgotten or doubled), a
-/// refractive index inverted, a texture used without its gamma or upside down.
+/// refractive index inverted, paths stopped after one bounce, a texture used without
+/// its gamma or upside down.
 #[test]
 fn scene_file_mistakes_are_caught_with_their_hint() {
     let cache = cache();
@@ -222,6 +223,11 @@ fn scene_file_mistakes_are_caught_with_their_hint() {
             "glass",
             Box::new(|t: &str| t.replace("glass = 1.5", "glass = 0.6666666666666666")),
             "inverted index",
+        ),
+        (
+            "indirect",
+            Box::new(|t: &str| t.replace("bounces = 5", "bounces = 1")),
+            "bounce limit",
         ),
         (
             "textures",
