@@ -114,28 +114,28 @@ impl Outcome {
 /// of the expected image (a neighbour more than 24 levels away) may all differ;
 /// elsewhere, at most 0.2% of the pixels.
 pub fn compare_pixels(student: &RgbImage, expected: &RgbImage, tolerance: u8) -> Outcome {
+    compare_pixels_near_edges(student, expected, tolerance, 0)
+}
+
+/// As [`compare_pixels`], with the edges widened by `reach` pixels on every side:
+/// a JPEG's compression smears colour over blocks of pixels (its colour is stored at
+/// half the resolution), so a right image saved as a JPEG differs by more than its
+/// tolerance up to a pixel beyond each edge.
+pub fn compare_pixels_near_edges(
+    student: &RgbImage,
+    expected: &RgbImage,
+    tolerance: u8,
+    reach: u32,
+) -> Outcome {
     let (w, h) = student.dimensions();
     let differs: Vec<bool> = student
         .pixels()
         .zip(expected.pixels())
         .map(|(s, e)| s.0.iter().zip(e.0).any(|(a, b)| a.abs_diff(b) > tolerance))
         .collect();
-    let edge = |x: u32, y: u32| {
-        let centre = expected.get_pixel(x, y).0;
-        (x.saturating_sub(1)..(x + 2).min(w))
-            .flat_map(|i| (y.saturating_sub(1)..(y + 2).min(h)).map(move |j| (i, j)))
-            .any(|(i, j)| {
-                expected
-                    .get_pixel(i, j)
-                    .0
-                    .iter()
-                    .zip(centre)
-                    .any(|(a, b)| a.abs_diff(b) > 24)
-            })
-    };
-    let off_edges = (0..h)
-        .flat_map(|y| (0..w).map(move |x| (x, y)))
-        .filter(|&(x, y)| differs[(y * w + x) as usize] && !edge(x, y))
+    let edges = widened(&edges(expected), (w, h), reach);
+    let off_edges = (0..(w * h) as usize)
+        .filter(|&i| differs[i] && !edges[i])
         .count();
     Outcome {
         image_differs: off_edges as f64 > 0.002 * f64::from(w * h),
@@ -143,6 +143,44 @@ pub fn compare_pixels(student: &RgbImage, expected: &RgbImage, tolerance: u8) ->
         cell: 1,
         columns: w,
     }
+}
+
+/// Per pixel, row-major: whether a neighbour of the pixel in `image` is more than 24
+/// levels away in a channel.
+fn edges(image: &RgbImage) -> Vec<bool> {
+    let (w, h) = image.dimensions();
+    let edge = |x: u32, y: u32| {
+        let centre = image.get_pixel(x, y).0;
+        (x.saturating_sub(1)..(x + 2).min(w))
+            .flat_map(|i| (y.saturating_sub(1)..(y + 2).min(h)).map(move |j| (i, j)))
+            .any(|(i, j)| {
+                image
+                    .get_pixel(i, j)
+                    .0
+                    .iter()
+                    .zip(centre)
+                    .any(|(a, b)| a.abs_diff(b) > 24)
+            })
+    };
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| edge(x, y))
+        .collect()
+}
+
+/// `mask` (of a `w` x `h` image) with every set pixel grown by `reach` pixels.
+fn widened(mask: &[bool], (w, h): (u32, u32), reach: u32) -> Vec<bool> {
+    if reach == 0 {
+        return mask.to_vec();
+    }
+    let at = |x: u32, y: u32| mask[(y * w + x) as usize];
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .map(|(x, y)| {
+            (x.saturating_sub(reach)..(x + reach + 1).min(w))
+                .any(|i| (y.saturating_sub(reach)..(y + reach + 1).min(h)).any(|j| at(i, j)))
+        })
+        .collect()
 }
 
 /// Compares a Monte Carlo stage's image, read back to linear radiance, with the

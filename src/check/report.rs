@@ -4,7 +4,8 @@
 use image::{Rgb, RgbImage};
 
 use crate::check::compare::{
-    Linear, Outcome, brightness_ratio, compare_blocks, compare_pixels, displayed,
+    Linear, Outcome, brightness_ratio, compare_blocks, compare_pixels, compare_pixels_near_edges,
+    displayed,
 };
 use crate::check::expected::{Expected, Source};
 use crate::check::mistakes::{Candidates, Mistake, best_explanation};
@@ -48,7 +49,11 @@ pub fn check(source: &Source, image: &RgbImage, lossy: bool) -> Result<Report, S
     let linear = Linear::from_rgb8(image, gamma);
     let reference = Linear::from_film(&film, gamma);
     let mut outcome = if expected.deterministic {
-        compare_pixels(image, &displayed(&film, gamma), if lossy { 12 } else { 3 })
+        let expected = displayed(&film, gamma);
+        match lossy {
+            true => compare_pixels_near_edges(image, &expected, 20, 1),
+            false => compare_pixels(image, &expected, 3),
+        }
     } else {
         compare_blocks(&linear, &reference, gamma)
     };

@@ -108,6 +108,43 @@ fn every_deterministic_stage_passes_its_own_image() {
     assert_eq!(count, 7);
 }
 
+/// A right image of each deterministic stage saved as a JPEG of quality 85 (whose
+/// colour is stored at half the resolution) passes: the compression moves pixels by
+/// more than a PNG's tolerance near every edge. A JPEG of a wrong image still fails
+/// with its hint.
+#[test]
+fn every_deterministic_stage_passes_as_a_jpeg_of_quality_85() {
+    let cache = cache();
+    let as_jpeg = |stage: &Stage, edit: &dyn Fn(&str) -> String| {
+        let image = picture(&scene_at(stage, edit, (0, None), 256));
+        let mut jpeg = vec![];
+        image::codecs::jpeg::JpegEncoder::new_with_quality(&mut jpeg, 85)
+            .encode_image(&image)
+            .unwrap();
+        let read = image::load_from_memory(&jpeg).unwrap().to_rgb8();
+        let source = Source {
+            stage,
+            size: read.dimensions(),
+            cache: &cache,
+            progress: &|_| {},
+        };
+        check(&source, &read, true).unwrap()
+    };
+    let deterministic =
+        stages().filter(|s| s.scene(&Overrides::default()).unwrap().settings.samples == 1);
+    for stage in deterministic {
+        let report = as_jpeg(stage, &same);
+        assert_eq!(
+            report.verdict,
+            Verdict::Matches,
+            "{}: {report:?}",
+            stage.name
+        );
+    }
+    let without_gamma = as_jpeg(stage("glass"), &|t| t.replace("gamma = 2.2\n", ""));
+    assert!(caught(&without_gamma, "no gamma"), "{without_gamma:?}");
+}
+
 /// A right render with another seed, at the course's samples or a quarter of them,
 /// passes: no false alarm in the trials. The naive soft shadows are tried at the
 /// course's samples only: their light is found by chance, so nearly every pixel
