@@ -36,6 +36,7 @@ use std::process::ExitCode;
 
 /// The exercises of every session of the build, in the course's order.
 const SESSIONS: &[&[checklist::Exercise]] = &[
+    // One slice per session, each in the order its chapter teaches.
     s1::EXERCISES,
     #[cfg(feature = "s2")]
     s2::EXERCISES,
