@@ -58,7 +58,7 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     for (index, exercises) in sessions.iter().enumerate() {
         let session = index as u32 + 1;
         for exercise in exercises.iter().filter(|e| chosen(e.name)) {
-            let verdict = attempt(exercise.check);
+            let verdict = caught(exercise.check);
             let ok = verdict == Verdict::Passed;
             report(exercise.name, &verdict, Some(exercise), &markers, &verdicts);
             if session == current {
@@ -78,7 +78,7 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
         for stage in stages().filter(|s| s.session == session) {
             let name = images::check_name(stage);
             if chosen(&name) {
-                let verdict = attempt_stage(stage);
+                let verdict = caught(|| images::check(stage));
                 report(&name, &verdict, None, &markers, &verdicts);
                 if verdict == Verdict::Passed {
                     passed += 1
@@ -110,16 +110,6 @@ fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
         }
         None => println!("progress: session {session}: all {total} exercises done"),
     }
-}
-
-/// Runs a check, a panic caught.
-fn attempt(check: fn() -> Outcome) -> Verdict {
-    caught(check)
-}
-
-/// Checks a stage's image, a panic caught.
-fn attempt_stage(stage: &'static raycourse::Stage) -> Verdict {
-    caught(|| images::check(stage))
 }
 
 /// The verdict of `run`: a panic with a stub's message names the stub's exercise.

@@ -48,11 +48,8 @@ pub fn check_name(stage: &Stage) -> String {
     format!("s{}_stage_{}", stage.session, stage.name.replace('-', "_"))
 }
 
-/// Whether the stage draws random numbers: more than one sample per pixel.
-fn monte_carlo(stage: &Stage) -> bool {
-    course_samples(stage) > 1
-}
-
+/// The stage's samples per pixel at the course's settings: more than one for a
+/// Monte Carlo stage, which draws random numbers.
 fn course_samples(stage: &Stage) -> u32 {
     stage
         .scene(&Overrides::default())
@@ -61,14 +58,11 @@ fn course_samples(stage: &Stage) -> u32 {
         .samples
 }
 
-/// The stage rendered small, with `samples` per pixel and `seed`, and its gamma;
-/// by the fast engine (the same image, sooner) for a reference.
-fn film(stage: &Stage, samples: u32, seed: Option<u64>, fast: bool) -> (Film, Real) {
-    let size = if monte_carlo(stage) {
-        NOISY_SIZE
-    } else {
-        EXACT_SIZE
-    };
+/// The stage rendered small (`noisy`: the size of Monte Carlo stages), with
+/// `samples` per pixel and `seed`, and its gamma; by the fast engine (the same
+/// image, sooner) for a reference.
+fn film(stage: &Stage, noisy: bool, samples: u32, seed: Option<u64>, fast: bool) -> (Film, Real) {
+    let size = if noisy { NOISY_SIZE } else { EXACT_SIZE };
     let overrides = Overrides {
         width: NonZeroU32::new(size),
         height: NonZeroU32::new(size),
@@ -92,11 +86,13 @@ fn reference_path(stage: &Stage) -> PathBuf {
 /// Renders the stage with the code under test and compares it with its reference;
 /// the render is written to the test's target folder for a look when it differs.
 pub fn check(stage: &Stage) -> Outcome {
-    let (film, gamma) = film(stage, course_samples(stage), None, false);
+    let samples = course_samples(stage);
+    let noisy = samples > 1;
+    let (film, gamma) = film(stage, noisy, samples, None, false);
     let reference = reference_path(stage);
     let yours = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{}.png", stage.name));
-    let found = if monte_carlo(stage) {
-        compare_noisy(&film, &read_16(&reference)?, gamma)
+    let found = if noisy {
+        compare_noisy(&film, &read_16(&reference, gamma)?, gamma)
     } else {
         compare_exact(&displayed(&film, gamma), &read_8(&reference)?, gamma)
     };
@@ -246,12 +242,13 @@ fn brightness_hint(yours: &Linear, reference: &Linear, gamma: Real) -> Option<St
     ))
 }
 
-/// A 16-bit reference read back to linear radiance: `L = (v / 256)^gamma`.
-fn read_16(path: &Path) -> Result<Linear, String> {
+/// A 16-bit reference read back to linear radiance through its stage's `gamma`:
+/// `L = (v / 256)^gamma`.
+fn read_16(path: &Path, gamma: Real) -> Result<Linear, String> {
     let image = image::open(path)
         .map_err(|e| format!("{}: {e}", path.display()))?
         .into_rgb16();
-    let gamma = gamma_of(path)?;
+    let gamma = to_double(gamma);
     Ok(Linear {
         width: image.width(),
         height: image.height(),
@@ -261,21 +258,6 @@ fn read_16(path: &Path) -> Result<Linear, String> {
             .map(|&v| (f64::from(v) / 256.0).powf(gamma))
             .collect(),
     })
-}
-
-/// The gamma of the stage whose reference is `path`.
-fn gamma_of(path: &Path) -> Result<f64, String> {
-    let name = path
-        .file_stem()
-        .and_then(|s| s.to_str())
-        .unwrap_or_default();
-    let stage = stages()
-        .find(|s| s.name == name)
-        .ok_or(format!("no stage {name}"))?;
-    let scene = stage
-        .scene(&Overrides::default())
-        .map_err(|e| e.to_string())?;
-    Ok(to_double(scene.settings.gamma))
 }
 
 fn read_8(path: &Path) -> Result<RgbImage, String> {
@@ -315,12 +297,13 @@ fn to_rgb16(film: &Film, gamma: Real) -> ImageBuffer<Rgb<u16>, Vec<u16>> {
 pub fn write_references() -> ExitCode {
     for stage in stages() {
         let path = reference_path(stage);
-        let written = if monte_carlo(stage) {
-            let samples = course_samples(stage) * REFERENCE_FACTOR;
-            let (film, gamma) = film(stage, samples, Some(REFERENCE_SEED), true);
+        let samples = course_samples(stage);
+        let written = if samples > 1 {
+            let more = samples * REFERENCE_FACTOR;
+            let (film, gamma) = film(stage, true, more, Some(REFERENCE_SEED), true);
             to_rgb16(&film, gamma).save(&path)
         } else {
-            let (film, gamma) = film(stage, 1, None, true);
+            let (film, gamma) = film(stage, false, 1, None, true);
             displayed(&film, gamma).save(&path)
         };
         match written {

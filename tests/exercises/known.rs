@@ -51,6 +51,15 @@ pub fn vec(v: Vec3) -> String {
     format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
 }
 
+/// Whether two optional distances agree: both absent, or both within `tolerance`.
+pub fn same_distance(gave: Option<Real>, expected: Option<Real>, tolerance: Real) -> bool {
+    match (gave, expected) {
+        (Some(t), Some(e)) => (t - e).abs() < tolerance,
+        (None, None) => true,
+        _ => false,
+    }
+}
+
 /// An optional value as the book writes it: the value, or `no hit`.
 pub fn maybe(t: Option<Real>) -> String {
     t.map_or("no hit".into(), |t| format!("t = {}", num(t)))

@@ -11,7 +11,7 @@ use raycourse::scene::Scene;
 use raycourse::{Overrides, parse_scene};
 
 use crate::checklist::Exercise;
-use crate::known::{Outcome, close_vec, ensure, maybe, vec};
+use crate::known::{Outcome, close_vec, ensure, maybe, same_distance, vec};
 
 /// Session 1's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -116,11 +116,7 @@ fn sphere_distance() -> Outcome {
     for (what, centre, radius, direction, expected) in cases {
         let ray = Ray::new(Vec3::ZERO, direction);
         let gave = sphere(centre, radius).intersect(&ray);
-        let right = match (gave, expected) {
-            (Some(t), Some(e)) => (t - e).abs() < 1e-4,
-            (None, None) => true,
-            _ => false,
-        };
+        let right = same_distance(gave, expected, 1e-4);
         ensure(right, || {
             format!(
                 "a sphere of radius {radius} at {} {what}, the ray from (0, 0, 0) along {}: gave {}, expected {}",

@@ -4,7 +4,7 @@ use raycourse::geometry::{Aabb, Ray, intersect_triangle};
 use raycourse::maths::{Real, Vec3};
 
 use crate::checklist::Exercise;
-use crate::known::{Outcome, ensure, maybe, num, vec};
+use crate::known::{Outcome, ensure, maybe, num, same_distance, vec};
 
 /// Session 5's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -172,11 +172,7 @@ fn slab() -> Outcome {
     for (what, origin, direction, t_max, expected) in cases {
         let ray = Ray::new(origin, direction);
         let gave = cube.entry(&ray, ray.direction.recip(), t_max);
-        let right = match (gave, expected) {
-            (Some(t), Some(e)) => (t - e).abs() < 1e-4,
-            (None, None) => true,
-            _ => false,
-        };
+        let right = same_distance(gave, expected, 1e-4);
         ensure(right, || {
             format!(
                 "the box from (-1, -1, -1) to (1, 1, 1), a ray {what} (d = {}): gave {}, expected {}",
