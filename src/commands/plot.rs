@@ -10,7 +10,7 @@ use plotters::prelude::*;
 use plotters::style::FontStyle;
 use raycourse::maths::to_double;
 use raycourse::render::png::encode_rgb8;
-use raycourse::studies::convergence::{Rung, read_rungs};
+use raycourse::studies::convergence::{Rung, axis_label, read_rungs};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
@@ -142,8 +142,8 @@ fn draw_panel(area: &Area, lines: &[Line], x_name: &str) -> Option<()> {
         .ok()?;
     chart
         .configure_mesh()
-        .x_label_formatter(&|v| tick(*v))
-        .y_label_formatter(&|v| tick(*v))
+        .x_label_formatter(&|v| axis_label(*v))
+        .y_label_formatter(&|v| axis_label(*v))
         .x_desc(x_name)
         .y_desc("RMSE (linear radiance)")
         .label_style(("sans-serif", 15))
@@ -178,63 +178,4 @@ fn draw_panel(area: &Area, lines: &[Line], x_name: &str) -> Option<()> {
         .border_style(BLACK)
         .draw()
         .ok()
-}
-
-/// A tick label: plain for everyday magnitudes, `1e5` style otherwise.
-fn tick(v: f64) -> String {
-    if (0.01..10_000.0).contains(&v) {
-        format!("{}", (v * 1e4).round() / 1e4)
-    } else {
-        format!("{v:.0e}")
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use raycourse::maths::Real;
-    use raycourse::studies::convergence::ImageError;
-
-    fn rung(variant: &str, samples: u32, rmse: Real) -> Rung {
-        Rung {
-            variant: variant.into(),
-            samples,
-            seconds: samples as Real * 0.01,
-            error: ImageError { rmse, rel_mse: 0.0 },
-        }
-    }
-
-    #[test]
-    fn plots_are_pngs_of_the_plot_size_with_two_colours_of_lines() {
-        let rungs: Vec<Rung> = [1, 2, 4, 8]
-            .iter()
-            .flat_map(|&n| [rung("a", n, 1.0 / n as Real), rung("b", n, 2.0 / n as Real)])
-            .collect();
-        let png = plot_rungs("test", &rungs).unwrap();
-        let image = image::load_from_memory(&png).unwrap().to_rgb8();
-        assert_eq!(image.dimensions(), SIZE);
-        let colour = |i: usize| {
-            let c = Palette99::pick(i).to_rgba();
-            [c.0, c.1, c.2]
-        };
-        for i in 0..2 {
-            let count = image.pixels().filter(|p| p.0 == colour(i)).count();
-            assert!(count > 500, "variant {i}: {count} pixels of its colour");
-        }
-        let text = image.pixels().filter(|p| p.0 == [0, 0, 0]).count();
-        assert!(text > 1000, "{text} black pixels: labels and frames drawn");
-    }
-
-    #[test]
-    fn tick_labels_are_short() {
-        assert_eq!(tick(100000.0), "1e5");
-        assert_eq!(tick(20.0), "20");
-        assert_eq!(tick(0.1), "0.1");
-        assert_eq!(tick(0.001), "1e-3");
-    }
-
-    #[test]
-    fn exact_images_have_no_plot() {
-        assert_eq!(plot_rungs("exact", &[rung("a", 1, 0.0)]), None);
-    }
 }

@@ -180,10 +180,28 @@ pub fn climb(
         .collect()
 }
 
+/// A number on a plot's logarithmic axis: plain for everyday magnitudes (at most
+/// four decimals), `1e5` style otherwise.
+pub fn axis_label(v: f64) -> String {
+    if (0.01..10_000.0).contains(&v) {
+        format!("{}", (v * 1e4).round() / 1e4)
+    } else {
+        format!("{v:.0e}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::maths::Colour;
+
+    #[test]
+    fn axis_labels_are_short() {
+        assert_eq!(axis_label(100000.0), "1e5");
+        assert_eq!(axis_label(20.0), "20");
+        assert_eq!(axis_label(0.1), "0.1");
+        assert_eq!(axis_label(0.001), "1e-3");
+    }
 
     fn film(values: &[Real]) -> Film {
         Film {

@@ -206,3 +206,70 @@ fn rays_prints_the_checksums_of_each_set() {
     assert_eq!(out.status.code(), Some(2));
     assert!(text(&out.stderr).contains("short.rays: 40 bytes"));
 }
+
+/// The CSV of a study with two variants whose error halves as the samples double.
+#[cfg(feature = "s3")]
+fn two_variant_study(
+    folder: &Path,
+    errors: impl Fn(u32) -> [raycourse::maths::Real; 2],
+) -> std::path::PathBuf {
+    use raycourse::maths::Real;
+    use raycourse::studies::convergence::{ImageError, Rung};
+    let mut text = format!("{}\n", Rung::CSV_HEADER);
+    for samples in [1, 2, 4, 8] {
+        for (variant, rmse) in ["a", "b"].iter().zip(errors(samples)) {
+            let rung = Rung {
+                variant: variant.to_string(),
+                samples,
+                seconds: samples as Real * 0.01,
+                error: ImageError { rmse, rel_mse: 0.0 },
+            };
+            text += &format!("{}\n", rung.csv());
+        }
+    }
+    let path = folder.join("study.csv");
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+/// `plot` draws a PNG of its size with one colour of line per variant, and labels.
+#[cfg(feature = "s3")]
+#[test]
+fn plots_are_pngs_of_the_plot_size_with_two_colours_of_lines() {
+    use plotters::style::{Color, Palette, Palette99};
+    let dir = tempfile::tempdir().unwrap();
+    use raycourse::maths::Real;
+    let csv = two_variant_study(dir.path(), |n| [1.0 / n as Real, 2.0 / n as Real]);
+    let out = run(
+        &["plot", csv.to_str().unwrap(), "--out", "plot.png"],
+        dir.path(),
+    );
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let image = image::open(dir.path().join("plot.png")).unwrap().to_rgb8();
+    assert_eq!(image.dimensions(), (1200, 500));
+    for i in 0..2 {
+        let c = Palette99::pick(i).to_rgba();
+        let count = image.pixels().filter(|p| p.0 == [c.0, c.1, c.2]).count();
+        assert!(count > 500, "variant {i}: {count} pixels of its colour");
+    }
+    let black = image.pixels().filter(|p| p.0 == [0, 0, 0]).count();
+    assert!(
+        black > 1000,
+        "{black} black pixels: labels and frames drawn"
+    );
+}
+
+/// Exact images have no logarithm of their error: nothing to plot, said, and no file.
+#[cfg(feature = "s3")]
+#[test]
+fn exact_images_have_no_plot() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = two_variant_study(dir.path(), |_| [0.0, 0.0]);
+    let out = run(
+        &["plot", csv.to_str().unwrap(), "--out", "plot.png"],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    assert!(text(&out.stderr).contains("nothing to plot"));
+    assert!(!dir.path().join("plot.png").exists());
+}

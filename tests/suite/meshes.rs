@@ -150,9 +150,12 @@ fn searches_agree_on_spot() {
     searches_agree("spot/spot.obj", 100_000);
 }
 
+/// The ogre has seven times Spot's triangles (39,856): brute force over 25,000 rays
+/// costs about what Spot's 100,000 cost, and a fifth of them still leave its surface
+/// as bounces do.
 #[test]
 fn searches_agree_on_the_ogre() {
-    searches_agree("ogre/ogre.obj", 100_000);
+    searches_agree("ogre/ogre.obj", 25_000);
 }
 
 /// With the course's triangle test, which the fast BVH's single-precision pre-test

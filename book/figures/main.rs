@@ -15,7 +15,7 @@
 //!   the course's fixed epsilon (top) and with the renderer's own offset (bottom).
 //!
 //! ```text
-//! cargo run --release --example book_figures -- book/src/figures/compare
+//! cargo run --release -p raycourse-book-figures -- book/src/figures/compare
 //! ```
 
 use std::num::NonZeroU32;
@@ -36,7 +36,7 @@ use raycourse::{Overrides, Scene, encode_png, find_stage, parse_scene, render};
 const BAND: u32 = 28;
 
 /// DejaVu Sans (see `assets/fonts/DejaVuSans.LICENSE`).
-const FONT: &[u8] = include_bytes!("../assets/fonts/DejaVuSans.ttf");
+const FONT: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
 
 /// The image of stage `name` of `session` at `size` x `size` pixels, its scene file
 /// first changed by `edit`.
