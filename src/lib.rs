@@ -43,6 +43,7 @@
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
 //! | `studies` | error against samples and time, scale sweeps, ray sets | 3, 6 |
 //! | [`check`] | an image against the stage's: the comparison (1), a student's image graded with the likely mistake (7) | 1, 7 |
+//! | [`inspect`] | one pixel's path ray by ray; images of normals, depth, objects and cost | 1 |
 //!
 //! A program starts with a [`Stage`] (or a scene file, [`load_scene`]), renders its
 //! [`Scene`] with [`render()`] (the course's code, or from session 3 the engine the
@@ -98,6 +99,8 @@ pub mod scene_file;
 pub mod studies;
 
 pub mod check;
+
+pub mod inspect;
 
 #[cfg(feature = "s3")]
 pub use engines::{render, render_reporting};

@@ -12,7 +12,9 @@
 //! - `texture-gamma.png`: the textured cow with its texture read as the display shows
 //!   it and, wrongly, as if its values were linear;
 //! - `epsilon.png`: the session-2 room at three scales, its shadow rays started with
-//!   the course's fixed epsilon (top) and with the renderer's own offset (bottom).
+//!   the course's fixed epsilon (top) and with the renderer's own offset (bottom);
+//! - `cost.png`: the tests each camera ray takes in the stages `mesh`, `mesh-bbox`
+//!   and `bvh` (`--aov cost`), each labelled with its mean.
 //!
 //! ```text
 //! cargo run --release -p raycourse-book-figures -- book/src/figures/compare
@@ -25,6 +27,7 @@ use image::{Rgb, RgbImage, imageops};
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 use raycourse::geometry::{Hit, Ray};
+use raycourse::inspect::aov::{Aov, see};
 use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::maths::{Colour, Real, Vec3};
@@ -215,6 +218,7 @@ fn main() {
         ("roulette.png", roulette()),
         ("texture-gamma.png", texture_gamma(&scratch)),
         ("epsilon.png", epsilon::figure()),
+        ("cost.png", cost()),
     ];
     for (name, image) in made {
         let png =
@@ -223,6 +227,36 @@ fn main() {
         println!("{}", out.join(name).display());
     }
     std::fs::remove_dir_all(scratch).expect("scratch folder removed");
+}
+
+/// The three mesh stages' images of cost (`--aov cost`), each labelled with its
+/// mean: the tests a camera ray takes, from brute force to the BVH.
+fn cost() -> RgbImage {
+    let panels: Vec<(String, RgbImage)> = [
+        (5, "mesh", "brute force"),
+        (5, "mesh-bbox", "box"),
+        (6, "bvh", "BVH"),
+    ]
+    .into_iter()
+    .map(|(session, name, search)| {
+        let stage = find_stage(session, name).expect("the stage is in this build");
+        let overrides = Overrides {
+            width: NonZeroU32::new(256),
+            height: NonZeroU32::new(256),
+            ..Overrides::default()
+        };
+        let scene = stage.scene(&overrides).expect("loads");
+        let seen = see(&scene, Aov::Cost);
+        let mean = seen.mean.expect("every ray costs something");
+        let image = RgbImage::from_raw(seen.width, seen.height, seen.rgb).expect("the size");
+        (format!("{search}: {mean:.1} tests a ray"), image)
+    })
+    .collect();
+    let labelled: Vec<(&str, RgbImage)> = panels
+        .iter()
+        .map(|(l, i)| (l.as_str(), i.clone()))
+        .collect();
+    side_by_side(&labelled)
 }
 
 /// A fresh scratch folder.

@@ -9,6 +9,7 @@ pub mod animate;
 pub mod bench;
 pub mod figures;
 pub mod list;
+pub mod probe;
 pub mod render;
 pub mod stage;
 

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use clap::Args;
 use raycourse::Overrides;
+use raycourse::inspect::aov::Aov;
 use raycourse::maths::Real;
 
 use crate::commands::failure::Failure;
@@ -47,9 +48,21 @@ pub struct RenderArgs {
     /// show in it (session 3).
     #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
     pub fast: bool,
+    /// Instead of the render, an image of what the renderer sees through each
+    /// pixel's centre: the normal, the depth, the albedo, the object, or the cost
+    /// (spheres, boxes and triangles tested), into `out/<name>-<kind>.png`.
+    #[arg(long, value_parser = aov_parser())]
+    pub aov: Option<Aov>,
     /// Hide the progress bar.
     #[arg(long, short)]
     pub quiet: bool,
+}
+
+/// The kinds of `--aov`, by name.
+fn aov_parser() -> impl clap::builder::TypedValueParser<Value = Aov> {
+    use clap::builder::TypedValueParser;
+    clap::builder::PossibleValuesParser::new(Aov::ALL.map(Aov::name))
+        .map(|name| Aov::from_name(&name).expect("clap accepts only the kinds' names"))
 }
 
 impl RenderArgs {

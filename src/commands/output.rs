@@ -5,6 +5,9 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
+use raycourse::inspect::aov::{Aov, see};
+use raycourse::inspect::colour_scale::label as label_of;
+use raycourse::render::png::encode_rgb8;
 use raycourse::{Render, Scene, encode_png, render_reporting};
 
 use crate::commands::failure::Failure;
@@ -67,6 +70,14 @@ pub fn render_to_file(
     options: &RenderArgs,
     default_out: PathBuf,
 ) -> Result<(), Failure> {
+    if let Some(aov) = options.aov {
+        let name = format!("{label}-{}.png", aov.name());
+        let out = options
+            .out
+            .clone()
+            .unwrap_or(default_out.with_file_name(name));
+        return aov_to_file(label, scene, aov, options, &out);
+    }
     let out = options.out.clone().unwrap_or(default_out);
     let timed = timed_render(label, scene, options)?;
     write(&out, &encode_png(&timed.result.film, scene.settings.gamma))?;
@@ -102,6 +113,37 @@ pub fn render_to_file(
     Ok(())
 }
 
+/// Writes the image of `aov` for `scene` to `out` and prints its closing line: the
+/// range of the colour scale and, for the cost, the mean.
+fn aov_to_file(
+    label: &str,
+    scene: &Scene,
+    aov: Aov,
+    options: &RenderArgs,
+    out: &Path,
+) -> Result<(), Failure> {
+    let image = thread_pool(options.threads)?.install(|| see(scene, aov));
+    write(out, &encode_rgb8(&image.rgb, image.width, image.height))?;
+    let range = match image.range {
+        Some((low, high)) => format!(
+            ", from {} (purple) to {} (yellow)",
+            label_of(low),
+            label_of(high)
+        ),
+        None => String::new(),
+    };
+    let mean = match (aov, image.mean) {
+        (Aov::Cost, Some(mean)) => format!(", mean cost {mean:.1} tests a ray"),
+        _ => String::new(),
+    };
+    println!(
+        "{label}: {} image{range}{mean} -> {}",
+        aov.name(),
+        out.display()
+    );
+    Ok(())
+}
+
 /// The samples each pixel `taken`, as a grey PNG the size of `scene`'s image: black
 /// for the fewest, white for the most.
 fn sample_map(taken: &[u32], scene: &Scene) -> Vec<u8> {
@@ -112,5 +154,5 @@ fn sample_map(taken: &[u32], scene: &Scene) -> Vec<u8> {
         .iter()
         .flat_map(|&n| [(255.0 * f64::from(n - fewest) / span).round() as u8; 3])
         .collect();
-    raycourse::render::png::encode_rgb8(&grey, scene.camera.width, scene.camera.height)
+    encode_rgb8(&grey, scene.camera.width, scene.camera.height)
 }

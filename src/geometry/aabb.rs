@@ -1,6 +1,6 @@
 //! Axis-aligned bounding boxes and the slab test.
 
-use crate::geometry::Ray;
+use crate::geometry::{Ray, cost};
 use crate::maths::{Real, Vec3, error_bound};
 
 /// The box `[min, max]`: the smallest axis-aligned box around some geometry.
@@ -79,6 +79,7 @@ impl Aabb {
     /// Exercise s5.2, the slab test: book session 5, "The bounding box".
     #[inline]
     pub fn entry(&self, ray: &Ray, inv_direction: Vec3, t_max: Real) -> Option<Real> {
+        cost::count_box();
         let (mut near, mut far) = (0.0, t_max);
         for axis in 0..3 {
             let inv = inv_direction[axis];

@@ -9,6 +9,7 @@ use crate::maths::{PixelRng, pixel_rng};
 
 // ANCHOR: tracer
 /// Traces the rays of one pixel through a scene, counting them.
+#[derive(Clone)]
 pub struct Tracer<'a> {
     /// The scene being rendered.
     pub scene: &'a Scene,
@@ -22,8 +23,23 @@ pub struct Tracer<'a> {
     /// The random numbers of the pixel being rendered (session 3).
     #[cfg(feature = "s3")]
     pub rng: PixelRng,
+    /// The rays traced, written down only when a pixel is probed (`raycourse
+    /// probe`); `None` while rendering.
+    pub log: Option<Vec<Traced<'a>>>,
 }
 // ANCHOR_END: tracer
+
+/// One ray that a probed pixel traced, what it met, and the tracer as it was just
+/// before: a copy of it traces the same path again from this ray on.
+#[derive(Clone)]
+pub struct Traced<'a> {
+    /// The ray.
+    pub ray: Ray,
+    /// What it met, if anything.
+    pub hit: Option<Hit>,
+    /// The tracer before the ray was traced, without its log.
+    pub before: Tracer<'a>,
+}
 
 impl<'a> Tracer<'a> {
     /// A tracer over `scene` that has traced no ray yet.
@@ -35,14 +51,33 @@ impl<'a> Tracer<'a> {
             dropped: 0,
             #[cfg(feature = "s3")]
             rng: pixel_rng(scene.settings.seed, 0),
+            log: None,
         }
     }
 
     // ANCHOR: trace
-    /// The nearest hit of `ray`, counted as one ray traced.
+    /// The nearest hit of `ray`, counted as one ray traced (and written down when the
+    /// pixel is probed).
     pub fn trace(&mut self, ray: &Ray) -> Option<Hit> {
         self.rays += 1;
-        self.scene.intersect(ray)
+        let hit = self.scene.intersect(ray);
+        self.write_down(ray, hit);
+        hit
     }
     // ANCHOR_END: trace
+
+    /// Adds `ray` and `hit` to the log, if there is one, with the tracer as it was
+    /// before the ray.
+    fn write_down(&mut self, ray: &Ray, hit: Option<Hit>) {
+        if let Some(mut log) = self.log.take() {
+            let mut before = self.clone();
+            before.rays -= 1;
+            log.push(Traced {
+                ray: *ray,
+                hit,
+                before,
+            });
+            self.log = Some(log);
+        }
+    }
 }

@@ -7,8 +7,9 @@ use rand::{RngExt, SeedableRng};
 use crate::maths::Real;
 
 // ANCHOR: pixel_rng
-/// The random numbers of one pixel.
-#[derive(Debug)]
+/// The random numbers of one pixel. A copy draws the same numbers as the original
+/// from where it was made, which is how `raycourse probe` replays part of a path.
+#[derive(Clone, Debug)]
 pub enum PixelRng {
     /// Independent numbers from a generator seeded by the pixel: the course's.
     Independent(rand_pcg::Pcg64Mcg),
@@ -67,6 +68,14 @@ pub trait SpreadNumbers: std::fmt::Debug + Send {
     fn number(&mut self) -> Real;
     /// A point of `[0, 1)^2` for a two-dimensional decision.
     fn pair(&mut self) -> (Real, Real);
+    /// A copy that draws the same numbers from here on.
+    fn copy(&self) -> Box<dyn SpreadNumbers>;
+}
+
+impl Clone for Box<dyn SpreadNumbers> {
+    fn clone(&self) -> Self {
+        self.copy()
+    }
 }
 
 // ANCHOR: splitmix64

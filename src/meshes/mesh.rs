@@ -4,7 +4,9 @@
 use std::sync::Arc;
 
 use crate::geometry::hit::offset_along;
-use crate::geometry::{Aabb, Hit, Ray, ShearedRay, TriangleHit, TriangleTest, intersect_triangle};
+use crate::geometry::{
+    Aabb, Hit, Ray, ShearedRay, TriangleHit, TriangleTest, cost, intersect_triangle,
+};
 use crate::materials::Material;
 use crate::maths::{Colour, Real, Vec3, error_bound};
 
@@ -94,6 +96,7 @@ impl Mesh {
         triangle: u32,
         t_max: Real,
     ) -> Option<TriangleHit> {
+        cost::count_triangle();
         let [a, b, c] = self.corners(triangle);
         match self.triangle_test {
             TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, t_max),

@@ -7,10 +7,12 @@ use crate::maths::Colour;
 use crate::render::Film;
 use crate::scene::Scene;
 
+// One pixel's radiance: the course's function of this build, which `raycourse probe`
+// also runs.
 #[cfg(not(feature = "s3"))]
-use crate::render::pixel::pixel;
+pub use crate::render::pixel::pixel;
 #[cfg(feature = "s3")]
-use crate::render::samples::pixel;
+pub use crate::render::samples::pixel;
 
 /// A finished render: the film and how many rays it took.
 #[derive(Clone, Debug, PartialEq)]

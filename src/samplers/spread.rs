@@ -103,6 +103,10 @@ impl SpreadNumbers for Spread {
         }
     }
     // ANCHOR_END: spread_pair
+
+    fn copy(&self) -> Box<dyn SpreadNumbers> {
+        Box::new(self.clone())
+    }
 }
 
 /// The point `jitter` of the way through stratum `k` of `count` equal strata of

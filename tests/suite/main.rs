@@ -10,6 +10,7 @@ mod bad_scenes;
 mod cli;
 mod extremes;
 mod fuzz;
+mod inspect;
 mod pictures;
 
 #[cfg(feature = "s2")]

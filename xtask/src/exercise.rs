@@ -87,12 +87,25 @@ pub enum Stub {
     Switch,
 }
 
-/// A function found with a marker: its marker, where its body lies, and where a
-/// line of attributes may go before its signature.
+/// A function found with a marker: its marker, where its body lies, where a line of
+/// attributes may go before its signature, and the statements its stub keeps.
 struct Found {
     marker: Marker,
     body: std::ops::Range<usize>,
     signature: usize,
+    kept: Vec<std::ops::Range<usize>>,
+}
+
+/// Whether a statement stays in an exercise's stub: a call into the renderer's
+/// `cost` counters, which `--aov cost` reads, is not the exercise's to write.
+fn kept_in_stub(statement: &syn::Stmt) -> bool {
+    match statement {
+        syn::Stmt::Expr(Expr::Call(call), Some(_)) => match &*call.func {
+            Expr::Path(path) => path.path.segments.iter().any(|s| s.ident == "cost"),
+            _ => false,
+        },
+        _ => false,
+    }
 }
 
 /// Finds the marked functions of a file.
@@ -116,10 +129,12 @@ impl Finder<'_> {
                 Some(within) => format!("{within}::{}", sig.ident),
                 None => sig.ident.to_string(),
             };
+            let kept = body.stmts.iter().take_while(|s| kept_in_stub(s));
             self.found.push(Found {
                 marker,
                 body: self.source.range(body.span()),
                 signature: self.source.offset(start.start()),
+                kept: kept.map(|s| self.source.range(s.span())).collect(),
             });
         }
     }
@@ -203,8 +218,13 @@ pub fn stub(text: &str, chosen: &dyn Fn(&Marker) -> bool, how: Stub) -> Result<S
         let line_start = text[..f.signature].rfind('\n').map_or(0, |i| i + 1);
         let indent = &text[line_start..f.signature].to_owned();
         let todo = format!("todo!({:?})", f.marker.message());
+        let kept: String = f
+            .kept
+            .iter()
+            .map(|range| format!("{indent}    {}\n", &text[range.clone()]))
+            .collect();
         let body = match how {
-            Stub::Todo => format!("{{\n{indent}    {todo}\n{indent}}}"),
+            Stub::Todo => format!("{{\n{kept}{indent}    {todo}\n{indent}}}"),
             Stub::Switch => format!(
                 "{{\n{indent}    if std::env::var_os(\"RAYCOURSE_STUB\").is_some_and(|s| s == {:?}) {{\n\
                  {indent}        {todo}\n{indent}    }}\n{indent}    {}\n{indent}}}",
@@ -366,6 +386,18 @@ mod tests {
         );
         assert!(allowed.ends_with("#![allow(unused_imports, dead_code)]\n\nuse std::fmt;\n"));
         syn::parse_file(&allowed).unwrap();
+    }
+
+    #[test]
+    fn a_stub_keeps_the_leading_cost_counters() {
+        let text = "impl Aabb {\n    /// Exercise s5.2, the slab test: book session 5, \"The bounding box\".\n    pub fn entry(&self) -> Option<Real> {\n        cost::count_box();\n        let near = 0.0;\n        cost::count_box();\n        Some(near)\n    }\n}\n";
+        let stubbed = stub(text, &|_| true, Stub::Todo).unwrap();
+        assert!(
+            stubbed.contains("Option<Real> {\n        cost::count_box();\n        todo!("),
+            "{stubbed}"
+        );
+        assert_eq!(stubbed.matches("count_box").count(), 1, "{stubbed}");
+        syn::parse_file(&stubbed).unwrap();
     }
 
     #[test]

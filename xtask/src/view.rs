@@ -33,7 +33,13 @@ pub fn write_view(root: &Path, session: u32, out: &Path) -> Result<(), String> {
     }
     copy_assets(root, out, session)?;
     copy_tests(root, out, session)?;
-    for file in rust_files(&root.join("examples"))? {
+    let examples = root.join("examples");
+    let examples = if examples.is_dir() {
+        rust_files(&examples)?
+    } else {
+        vec![]
+    };
+    for file in examples {
         let name = file
             .file_stem()
             .unwrap_or_default()

@@ -1,0 +1,91 @@
+//! `raycourse probe STAGE X Y`: one sample of one pixel, followed ray by ray
+//! ([`raycourse::inspect::probe`]), as text in the book's notation or as JSON.
+
+use std::io::Write;
+use std::path::PathBuf;
+
+use clap::{ArgMatches, FromArgMatches, Parser};
+use raycourse::inspect::probe::probe;
+use raycourse::stages;
+
+use crate::commands::Verb;
+use crate::commands::failure::Failure;
+use crate::commands::options::RenderArgs;
+
+/// Follow one sample of one pixel ray by ray: each hit, the light, the next
+/// direction and what each ray adds, computed by the renderer's own functions.
+#[derive(Parser)]
+#[command(name = "probe")]
+struct ProbeArgs {
+    /// The stage and the pixel, `STAGE X Y` (X from the left, Y from the top); with
+    /// `--scene`, only `X Y`.
+    #[arg(required = true, num_args = 2..=3, value_names = ["STAGE", "X", "Y"])]
+    place: Vec<String>,
+    /// A scene file instead of a stage.
+    #[arg(long)]
+    scene: Option<PathBuf>,
+    /// The sample to follow, from 0.
+    #[arg(long, default_value_t = 0)]
+    sample: u32,
+    /// Print one JSON document instead of text.
+    #[arg(long)]
+    json: bool,
+    #[command(flatten)]
+    options: RenderArgs,
+}
+
+/// The `probe` command.
+pub const VERB: Verb = Verb {
+    rank: 10,
+    session: 1,
+    command: <ProbeArgs as clap::CommandFactory>::command,
+    run,
+};
+
+inventory::submit! { VERB }
+
+fn run(matches: &ArgMatches) -> Result<(), Failure> {
+    let args = ProbeArgs::from_arg_matches(matches)?;
+    let overrides = args.options.overrides();
+    let (scene, pixel) = match (&args.scene, args.place.as_slice()) {
+        (Some(file), [x, y]) => (raycourse::load_scene(file, &overrides)?, [x, y]),
+        (None, [name, x, y]) => {
+            let stage = stages().find(|s| s.name == name.as_str()).ok_or_else(|| {
+                let names: Vec<&str> = stages().map(|s| s.name).collect();
+                Failure::Input(format!(
+                    "no stage `{name}` in this build: one of {}",
+                    names.join(", ")
+                ))
+            })?;
+            (stage.scene(&overrides)?, [x, y])
+        }
+        (Some(_), _) => return Err(Failure::Input("with --scene, give only X Y".into())),
+        (None, _) => {
+            return Err(Failure::Input(
+                "give STAGE X Y (or --scene FILE X Y)".into(),
+            ));
+        }
+    };
+    let [x, y] = pixel.map(|v| coordinate(v));
+    let found = probe(&scene, x?, y?, args.sample).map_err(Failure::input)?;
+    let text = if args.json {
+        serde_json::to_string_pretty(&found)
+            .map_err(|e| Failure::Machine(format!("cannot write the probe as JSON: {e}")))?
+            + "\n"
+    } else {
+        found.to_string()
+    };
+    // A reader that stops early (`| head`) is not a failure.
+    match std::io::stdout().write_all(text.as_bytes()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Failure::Machine(format!(
+            "cannot write to the standard output: {e}"
+        ))),
+        _ => Ok(()),
+    }
+}
+
+/// A pixel coordinate: a whole number from 0.
+fn coordinate(text: &str) -> Result<u32, Failure> {
+    text.parse()
+        .map_err(|_| Failure::Input(format!("`{text}` is not a pixel coordinate (0, 1, 2, ...)")))
+}

@@ -1,0 +1,74 @@
+//! The probe's account of the light source at a diffuse hit: the shadow ray, what
+//! blocks it, and what the light brings, each from the course's own functions.
+
+use crate::geometry::Hit;
+use crate::inspect::probe::{Direct, ShadowRay};
+use crate::integrator::tracer::Traced;
+use crate::lights::{Light, PointLight};
+use crate::maths::Colour;
+
+/// The light source's part at the diffuse hit `facing` (its normal towards the ray)
+/// of albedo `albedo`, reached by `traced`.
+pub fn direct(traced: &Traced, facing: &Hit, albedo: Colour) -> Direct {
+    let brings = traced.before.clone().direct_light(facing, albedo);
+    let (light, shadow_ray) = match traced.before.scene.light {
+        None => ("no light", None),
+        Some(Light::Point(light)) => ("point light", point_shadow_ray(traced, facing, &light)),
+        #[cfg(feature = "s4")]
+        Some(Light::Sphere(light)) => (
+            "sphere light",
+            sphere_shadow_ray(traced, facing, albedo, &light),
+        ),
+    };
+    Direct {
+        light,
+        shadow_ray,
+        brings: brings.to_array(),
+    }
+}
+
+/// The shadow ray towards a point light, when the scene traces shadow rays
+/// (session 2), and the object in its way.
+#[cfg_attr(
+    not(feature = "s2"),
+    expect(unused_variables, reason = "shadow rays come with session 2")
+)]
+fn point_shadow_ray(traced: &Traced, facing: &Hit, light: &PointLight) -> Option<ShadowRay> {
+    #[cfg(feature = "s2")]
+    if traced.before.scene.settings.shadows {
+        let (ray, distance) = traced.before.clone().shadow_ray(facing, light);
+        let nearest = traced.before.scene.nearest(&ray);
+        let in_the_way = crate::scene::occlusion::closer_than(nearest, distance);
+        return Some(ShadowRay {
+            origin: ray.origin.to_array(),
+            direction: ray.direction.to_array(),
+            distance: Some(distance),
+            blocked_by: nearest.filter(|_| in_the_way).map(|(_, object)| object),
+        });
+    }
+    None
+}
+
+/// The ray drawn towards a sphere light, when the scene samples it (session 4),
+/// and the first object it meets if that is not the light.
+#[cfg(feature = "s4")]
+fn sphere_shadow_ray(
+    traced: &Traced,
+    facing: &Hit,
+    albedo: Colour,
+    light: &crate::lights::SphereLight,
+) -> Option<ShadowRay> {
+    if !traced.before.scene.settings.light_sampling {
+        return None;
+    }
+    let (ray, _) = traced.before.clone().light_sample(light, facing, albedo)?;
+    let nearest = traced.before.scene.nearest(&ray);
+    let (to_light, other): (Vec<_>, Vec<_>) =
+        nearest.into_iter().partition(|n| n.1 == light.object);
+    Some(ShadowRay {
+        origin: ray.origin.to_array(),
+        direction: ray.direction.to_array(),
+        distance: to_light.first().map(|n| n.0),
+        blocked_by: other.first().map(|n| n.1),
+    })
+}
