@@ -30,19 +30,21 @@ thread_local! {
 /// Counts one bounding box tested.
 #[inline]
 pub fn count_box() {
-    COUNTED.with(|c| {
-        let mut cost = c.get();
-        cost.boxes += 1;
-        c.set(cost);
-    });
+    add(|cost| cost.boxes += 1);
 }
 
 /// Counts one triangle tested.
 #[inline]
 pub fn count_triangle() {
+    add(|cost| cost.triangles += 1);
+}
+
+/// Changes this thread's count by `count`.
+#[inline]
+fn add(count: impl FnOnce(&mut Cost)) {
     COUNTED.with(|c| {
         let mut cost = c.get();
-        cost.triangles += 1;
+        count(&mut cost);
         c.set(cost);
     });
 }

@@ -39,11 +39,13 @@ fn point_shadow_ray(traced: &Traced, facing: &Hit, light: &PointLight) -> Option
         let (ray, distance) = traced.before.clone().shadow_ray(facing, light);
         let nearest = traced.before.scene.nearest(&ray);
         let in_the_way = crate::scene::occlusion::closer_than(nearest, distance);
+        let blocker = nearest.filter(|_| in_the_way);
         return Some(ShadowRay {
             origin: ray.origin.to_array(),
             direction: ray.direction.to_array(),
             distance: Some(distance),
-            blocked_by: nearest.filter(|_| in_the_way).map(|(_, object)| object),
+            blocked_by: blocker.map(|(_, object)| object),
+            blocked_at: blocker.map(|(t, _)| t),
         });
     }
     None
@@ -70,5 +72,6 @@ fn sphere_shadow_ray(
         direction: ray.direction.to_array(),
         distance: to_light.first().map(|n| n.0),
         blocked_by: other.first().map(|n| n.1),
+        blocked_at: other.first().map(|n| n.0),
     })
 }

@@ -112,6 +112,8 @@ pub struct ShadowRay {
     pub distance: Option<Real>,
     /// The object in the way, if any.
     pub blocked_by: Option<usize>,
+    /// Where along the shadow ray the object in the way is met.
+    pub blocked_at: Option<Real>,
 }
 
 /// How the path goes on from a hit.

@@ -102,9 +102,10 @@ fn write_direct(f: &mut Formatter, direct: &Direct) -> fmt::Result {
                 triple(ray.direction)
             )?;
             let distance = ray.distance.map_or("-".to_owned(), |d| format!("{d:.4}"));
-            let blocked = ray.blocked_by.map_or("not blocked".to_owned(), |o| {
-                format!("blocked by object {o}")
-            });
+            let blocked = match (ray.blocked_by, ray.blocked_at) {
+                (Some(object), Some(t)) => format!("blocked by object {object} at t = {t:.3e}"),
+                _ => "not blocked".to_owned(),
+            };
             writeln!(f, "           distance {distance}, {blocked}")?;
         }
         None => writeln!(f, "  {}  no shadow ray traced", direct.light)?,
