@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::inspect::aov::{Aov, see};
-use raycourse::inspect::colour_scale::label as label_of;
+use raycourse::inspect::false_colour::label as label_of;
 use raycourse::render::png::encode_rgb8;
 use raycourse::{Render, Scene, encode_png, render_reporting};
 

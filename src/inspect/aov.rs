@@ -7,7 +7,7 @@ use rayon::prelude::*;
 use crate::geometry::cost::{Cost, measure};
 use crate::geometry::{Hit, Ray};
 use crate::inspect::bounce::diffuse_albedo;
-use crate::inspect::colour_scale::{Legend, scale_colour};
+use crate::inspect::false_colour::{Legend, scale_colour};
 use crate::maths::{Real, Vec3};
 use crate::scene::Scene;
 

@@ -2,13 +2,20 @@
 //! direction, its density and weight, Fresnel's choice and Russian roulette.
 
 use crate::geometry::{Hit, Ray};
-use crate::inspect::probe::{Next, cosine_pdf};
+use crate::inspect::path::Next;
 use crate::materials::Material;
-use crate::maths::{Colour, Vec3};
+use crate::maths::{Colour, PI, Real, Vec3};
 use crate::scene::Scene;
 
 /// How the path went on from `hit`, met by `ray`, in `direction`, with `bounces`
 /// allowed.
+#[cfg_attr(
+    not(feature = "s2"),
+    expect(
+        unused_variables,
+        reason = "mirrors and glass use the ray from session 2"
+    )
+)]
 pub fn next(scene: &Scene, ray: &Ray, hit: &Hit, direction: Vec3, bounces: u32) -> Next {
     let survival = if bounces == 0 {
         scene.settings.russian_roulette
@@ -25,15 +32,24 @@ pub fn next(scene: &Scene, ray: &Ray, hit: &Hit, direction: Vec3, bounces: u32) 
         survival,
         weight: [roulette; 3],
     };
-    match diffuse_albedo(&hit.material) {
-        Some(albedo) => {
+    match hit.material {
+        Material::Diffuse { albedo } => {
             let cos = direction.dot(hit.facing_the_ray().normal);
             next.kind = "diffuse bounce, drawn with density cos(theta) / pi".into();
             next.cos = Some(cos);
             next.pdf = Some(cosine_pdf(cos));
             next.weight = (albedo * roulette).to_array();
         }
-        None => specular(&mut next, ray, hit, direction),
+        #[cfg(feature = "s2")]
+        Material::Mirror => crate::inspect::specular::mirror(&mut next),
+        #[cfg(feature = "s2")]
+        Material::Glass { index } => {
+            crate::inspect::specular::glass(&mut next, ray, hit, index, direction);
+        }
+        #[cfg(feature = "s4")]
+        Material::FresnelGlass { index } => {
+            crate::inspect::fresnel::fresnel_glass(&mut next, ray, hit, index, direction);
+        }
     }
     next
 }
@@ -44,48 +60,6 @@ pub fn diffuse_albedo(material: &Material) -> Option<Colour> {
         Material::Diffuse { albedo } => Some(*albedo),
         #[allow(unreachable_patterns, reason = "session 1 has only diffuse surfaces")]
         _ => None,
-    }
-}
-
-/// Names what a mirror or glass did with the ray, with Fresnel's reflectance for
-/// glass that reflects.
-#[cfg_attr(
-    not(feature = "s2"),
-    expect(unused_variables, reason = "mirrors and glass come with session 2")
-)]
-fn specular(next: &mut Next, ray: &Ray, hit: &Hit, direction: Vec3) {
-    #[cfg(feature = "s2")]
-    {
-        use crate::materials::optics::{interface, refract};
-        let index = match hit.material {
-            Material::Glass { index } => index,
-            #[cfg(feature = "s4")]
-            Material::FresnelGlass { index } => index,
-            _ => {
-                next.kind = "mirror reflection".into();
-                return;
-            }
-        };
-        let (normal, eta) = interface(ray.direction, hit.normal, index);
-        let reflected = direction.dot(normal) > 0.0;
-        next.kind = match refract(ray.direction, normal, eta) {
-            None => "total internal reflection: past the critical angle".into(),
-            Some(_) if reflected => "reflection".into(),
-            Some(_) => format!("refraction, eta = n1 / n2 = {eta:.4}"),
-        };
-        #[cfg(feature = "s4")]
-        if let Material::FresnelGlass { .. } = hit.material
-            && refract(ray.direction, normal, eta).is_some()
-        {
-            let cos_i = -ray.direction.dot(normal);
-            let f = crate::materials::fresnel::fresnel_reflectance(cos_i, eta);
-            next.fresnel = Some(f);
-            next.kind += if reflected {
-                ", Fresnel's choice, with probability F"
-            } else {
-                ", Fresnel's choice, with probability 1 - F"
-            };
-        }
     }
 }
 
@@ -102,4 +76,9 @@ pub fn end(scene: &Scene, hit: &Hit, bounces: u32) -> String {
         (0, None) => format!("the bounce limit ({}) is reached", settings.bounces),
         _ => "the path ends here".into(),
     }
+}
+
+/// The density of a cosine-weighted direction at `cos`: `cos(theta) / pi`.
+pub fn cosine_pdf(cos: Real) -> Real {
+    cos / PI
 }

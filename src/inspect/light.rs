@@ -2,13 +2,14 @@
 //! blocks it, and what the light brings, each from the course's own functions.
 
 use crate::geometry::Hit;
-use crate::inspect::probe::{Direct, ShadowRay};
+use crate::inspect::path::{Direct, ShadowRay};
 use crate::integrator::tracer::Traced;
 use crate::lights::{Light, PointLight};
 use crate::maths::Colour;
 
 /// The light source's part at the diffuse hit `facing` (its normal towards the ray)
-/// of albedo `albedo`, reached by `traced`.
+/// of albedo `albedo`, reached by `traced`: what the course's `direct_light` brings,
+/// run again from a copy of the tracer as it was.
 pub fn direct(traced: &Traced, facing: &Hit, albedo: Colour) -> Direct {
     let brings = traced.before.clone().direct_light(facing, albedo);
     let (light, shadow_ray) = match traced.before.scene.light {
@@ -17,7 +18,7 @@ pub fn direct(traced: &Traced, facing: &Hit, albedo: Colour) -> Direct {
         #[cfg(feature = "s4")]
         Some(Light::Sphere(light)) => (
             "sphere light",
-            sphere_shadow_ray(traced, facing, albedo, &light),
+            crate::inspect::sphere_light::shadow_ray(traced, facing, albedo, &light),
         ),
     };
     Direct {
@@ -39,39 +40,11 @@ fn point_shadow_ray(traced: &Traced, facing: &Hit, light: &PointLight) -> Option
         let (ray, distance) = traced.before.clone().shadow_ray(facing, light);
         let nearest = traced.before.scene.nearest(&ray);
         let in_the_way = crate::scene::occlusion::closer_than(nearest, distance);
-        let blocker = nearest.filter(|_| in_the_way);
-        return Some(ShadowRay {
-            origin: ray.origin.to_array(),
-            direction: ray.direction.to_array(),
-            distance: Some(distance),
-            blocked_by: blocker.map(|(_, object)| object),
-            blocked_at: blocker.map(|(t, _)| t),
-        });
+        return Some(ShadowRay::new(
+            &ray,
+            Some(distance),
+            nearest.filter(|_| in_the_way),
+        ));
     }
     None
-}
-
-/// The ray drawn towards a sphere light, when the scene samples it (session 4),
-/// and the first object it meets if that is not the light.
-#[cfg(feature = "s4")]
-fn sphere_shadow_ray(
-    traced: &Traced,
-    facing: &Hit,
-    albedo: Colour,
-    light: &crate::lights::SphereLight,
-) -> Option<ShadowRay> {
-    if !traced.before.scene.settings.light_sampling {
-        return None;
-    }
-    let (ray, _) = traced.before.clone().light_sample(light, facing, albedo)?;
-    let nearest = traced.before.scene.nearest(&ray);
-    let (to_light, other): (Vec<_>, Vec<_>) =
-        nearest.into_iter().partition(|n| n.1 == light.object);
-    Some(ShadowRay {
-        origin: ray.origin.to_array(),
-        direction: ray.direction.to_array(),
-        distance: to_light.first().map(|n| n.0),
-        blocked_by: other.first().map(|n| n.1),
-        blocked_at: other.first().map(|n| n.0),
-    })
 }

@@ -2,7 +2,8 @@
 
 use std::fmt::{self, Display, Formatter};
 
-use crate::inspect::probe::{Direct, Level, Next, Probe, triple};
+use crate::inspect::path::{Direct, Level, Next, Probe};
+use crate::maths::Real;
 
 impl Display for Probe {
     fn fmt(&self, f: &mut Formatter) -> fmt::Result {
@@ -138,4 +139,9 @@ fn write_next(f: &mut Formatter, next: &Next, bounces_left: u32) -> fmt::Result 
         None => writeln!(f, "           bounces still allowed: {bounces_left}")?,
     }
     writeln!(f, "           weight {}", triple(next.weight))
+}
+
+/// Three numbers as the probe writes them: `(0.800, 0.200, 0.200)`.
+pub fn triple(v: [Real; 3]) -> String {
+    format!("({:.4}, {:.4}, {:.4})", v[0], v[1], v[2])
 }

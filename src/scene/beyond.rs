@@ -31,3 +31,21 @@ pub struct Beyond {
     /// functions, in less time.
     pub fast: bool,
 }
+
+impl Beyond {
+    /// What a render with these settings uses beyond the course, in words, if
+    /// anything: another sampler, adaptive sampling, the fast engine.
+    pub fn beyond_the_course(&self) -> Option<String> {
+        let mut what = vec![];
+        if self.sampler != Sampler::Independent {
+            what.push(format!("the sampler {:?}", self.sampler));
+        }
+        if let Some(noise) = self.noise {
+            what.push(format!("adaptive sampling (noise {noise})"));
+        }
+        if self.fast {
+            what.push("the fast engine (--fast)".into());
+        }
+        (!what.is_empty()).then(|| what.join(" and "))
+    }
+}

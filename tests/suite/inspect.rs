@@ -5,7 +5,8 @@
 use std::num::NonZeroU32;
 
 use raycourse::inspect::aov::{Aov, see};
-use raycourse::inspect::probe::{Probe, ProbeError, probe};
+use raycourse::inspect::path::Probe;
+use raycourse::inspect::probe::{ProbeError, probe};
 use raycourse::maths::Real;
 use raycourse::{Overrides, Scene, render, stages};
 
@@ -113,7 +114,7 @@ fn a_glass_pixel_shows_the_refraction_and_fresnel_s_choice() {
             .as_ref()
             .unwrap()
             .material
-            .contains("Fresnel glass")
+            .starts_with("FresnelGlass")
     );
     let next = first.next.as_ref().unwrap();
     let f = next.fresnel.unwrap();
@@ -140,7 +141,7 @@ fn a_diffuse_bounce_shows_its_pdf_and_weight() {
     assert!(cos > 0.0 && cos <= 1.0);
     assert!((pdf - cos / raycourse::maths::PI).abs() <= Real::EPSILON);
     let material = &found.levels[0].hit.as_ref().unwrap().material;
-    assert!(material.starts_with("diffuse"), "{material}");
+    assert!(material.starts_with("Diffuse"), "{material}");
 }
 
 /// `probe --json` prints one document with a block per level, the same as the text.
