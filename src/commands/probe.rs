@@ -2,25 +2,30 @@
 //! ([`raycourse::inspect::probe`]), as text in the book's notation or as JSON.
 
 use std::io::Write;
+use std::num::NonZeroU32;
 use std::path::PathBuf;
 
 use clap::{ArgMatches, FromArgMatches, Parser};
 use raycourse::inspect::probe::probe;
-use raycourse::stages;
+use raycourse::{Overrides, stages};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
-use crate::commands::options::RenderArgs;
 
 /// Follow one sample of one pixel ray by ray: each hit, the light, the next
 /// direction and what each ray adds, computed by the renderer's own functions.
 #[derive(Parser)]
 #[command(name = "probe")]
 struct ProbeArgs {
-    /// The stage and the pixel, `STAGE X Y` (X from the left, Y from the top); with
-    /// `--scene`, only `X Y`.
-    #[arg(required = true, num_args = 2..=3, value_names = ["STAGE", "X", "Y"])]
-    place: Vec<String>,
+    /// The stage (`raycourse list` names them); with `--scene`, the pixel's X.
+    #[arg(value_name = "STAGE")]
+    first: String,
+    /// The pixel's X, from the left; with `--scene`, its Y.
+    #[arg(value_name = "X")]
+    second: String,
+    /// The pixel's Y, from the top (none with `--scene`).
+    #[arg(value_name = "Y")]
+    third: Option<String>,
     /// A scene file instead of a stage.
     #[arg(long)]
     scene: Option<PathBuf>,
@@ -30,8 +35,21 @@ struct ProbeArgs {
     /// Print one JSON document instead of text.
     #[arg(long)]
     json: bool,
-    #[command(flatten)]
-    options: RenderArgs,
+    /// Image width in pixels.
+    #[arg(long)]
+    width: Option<NonZeroU32>,
+    /// Image height in pixels.
+    #[arg(long)]
+    height: Option<NonZeroU32>,
+    /// Samples per pixel.
+    #[arg(long)]
+    spp: Option<NonZeroU32>,
+    /// Bounce limit for mirrors, glass and indirect light.
+    #[arg(long)]
+    bounces: Option<u32>,
+    /// Seed of the random generators.
+    #[arg(long)]
+    seed: Option<u64>,
 }
 
 /// The `probe` command.
@@ -46,10 +64,19 @@ inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = ProbeArgs::from_arg_matches(matches)?;
-    let overrides = args.options.overrides();
-    let (scene, pixel) = match (&args.scene, args.place.as_slice()) {
-        (Some(file), [x, y]) => (raycourse::load_scene(file, &overrides)?, [x, y]),
-        (None, [name, x, y]) => {
+    let overrides = Overrides {
+        width: args.width,
+        height: args.height,
+        samples: args.spp,
+        bounces: args.bounces,
+        seed: args.seed,
+        ..Overrides::default()
+    };
+    let (first, second) = (&args.first, &args.second);
+    let (scene, pixel) = match (&args.scene, &args.third) {
+        (Some(file), None) => (raycourse::load_scene(file, &overrides)?, [first, second]),
+        (None, Some(third)) => {
+            let (name, x, y) = (first, second, third);
             let stage = stages().find(|s| s.name == name.as_str()).ok_or_else(|| {
                 let names: Vec<&str> = stages().map(|s| s.name).collect();
                 Failure::Input(format!(

@@ -275,3 +275,33 @@ fn the_cost_image_gives_its_mean() {
         "no render written"
     );
 }
+
+/// `probe --scene FILE X Y` follows a scene file's pixel as `probe STAGE X Y` follows
+/// the stage's; a stage with only one coordinate is refused.
+#[test]
+fn a_scene_file_is_probed_like_its_stage() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("sessions/s1/shading.toml");
+    let size = ["--width", "16", "--height", "16"];
+    let by_file = run(
+        &[
+            &["probe", "--scene", file.to_str().unwrap(), "8", "5"][..],
+            &size,
+        ]
+        .concat(),
+        dir.path(),
+    );
+    let by_stage = run(
+        &[&["probe", "shading", "8", "5"][..], &size].concat(),
+        dir.path(),
+    );
+    assert!(by_file.status.success(), "{}", text(&by_file.stderr));
+    assert_eq!(text(&by_file.stdout), text(&by_stage.stdout));
+    let out = run(&["probe", "shading", "8"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains("give STAGE X Y"),
+        "{}",
+        text(&out.stderr)
+    );
+}
