@@ -96,7 +96,6 @@ impl Mesh {
         triangle: u32,
         t_max: Real,
     ) -> Option<TriangleHit> {
-        cost::count_triangle();
         let [a, b, c] = self.corners(triangle);
         match self.triangle_test {
             TriangleTest::MollerTrumbore => intersect_triangle(ray, a, b, c, t_max),
@@ -107,15 +106,17 @@ impl Mesh {
     /// The nearest hit among `triangles`, closer than `best` if given. Equal
     /// distances go to the lower triangle index, so that every search order finds
     /// the same triangle. `sheared` is `ShearedRay::new(ray)`, made once per ray by
-    /// the caller, however many leaves of a hierarchy the ray visits.
+    /// the caller, however many leaves of a hierarchy the ray visits. Every one of
+    /// `triangles` is tested, and counted for `--aov cost`.
     pub fn nearest_among(
         &self,
         ray: &Ray,
         sheared: &ShearedRay,
-        triangles: impl Iterator<Item = u32>,
+        triangles: impl ExactSizeIterator<Item = u32>,
         mut best: Option<MeshHit>,
         t_max: Real,
     ) -> Option<MeshHit> {
+        cost::count_triangles(triangles.len());
         for triangle in triangles {
             let limit = best.map_or(t_max, |b| b.at.t.next_up());
             if let Some(at) = self.hit_triangle(ray, sheared, triangle, limit)
