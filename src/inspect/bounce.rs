@@ -11,10 +11,7 @@ use crate::scene::Scene;
 /// allowed.
 #[cfg_attr(
     not(feature = "s2"),
-    expect(
-        unused_variables,
-        reason = "mirrors and glass use the ray from session 2"
-    )
+    expect(unused_variables, reason = "mirrors and glass use the ray")
 )]
 pub fn next(scene: &Scene, ray: &Ray, hit: &Hit, direction: Vec3, bounces: u32) -> Next {
     let survival = if bounces == 0 {
