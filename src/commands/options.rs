@@ -10,9 +10,10 @@ use raycourse::maths::Real;
 
 use crate::commands::failure::Failure;
 
-/// Settings that replace the scene file's for one render.
+/// The scene-file settings that change what a pixel's path is: the image's size,
+/// the samples, the bounce limit and the seed.
 #[derive(Args, Clone, Debug, Default)]
-pub struct RenderArgs {
+pub struct SceneArgs {
     /// Image width in pixels.
     #[arg(long)]
     pub width: Option<NonZeroU32>,
@@ -28,6 +29,27 @@ pub struct RenderArgs {
     /// Seed of the random generators.
     #[arg(long)]
     pub seed: Option<u64>,
+}
+
+impl SceneArgs {
+    /// The scene-file settings these options replace.
+    pub fn overrides(&self) -> Overrides {
+        Overrides {
+            width: self.width,
+            height: self.height,
+            samples: self.spp,
+            bounces: self.bounces,
+            seed: self.seed,
+            ..Overrides::default()
+        }
+    }
+}
+
+/// Settings that replace the scene file's for one render.
+#[derive(Args, Clone, Debug, Default)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub scene: SceneArgs,
     /// Worker threads (default: one per core).
     #[arg(long)]
     pub threads: Option<NonZeroUsize>,
@@ -69,14 +91,9 @@ impl RenderArgs {
     /// The scene-file settings these options replace.
     pub fn overrides(&self) -> Overrides {
         Overrides {
-            width: self.width,
-            height: self.height,
-            samples: self.spp,
-            bounces: self.bounces,
-            seed: self.seed,
-            plunge: None,
             noise: self.noise,
             fast: self.fast,
+            ..self.scene.overrides()
         }
     }
 }

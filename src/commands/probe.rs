@@ -2,15 +2,15 @@
 //! ([`raycourse::inspect::probe`]), as text in the book's notation or as JSON.
 
 use std::io::Write;
-use std::num::NonZeroU32;
 use std::path::PathBuf;
 
 use clap::{ArgMatches, FromArgMatches, Parser};
 use raycourse::inspect::probe::probe;
-use raycourse::{Overrides, stages};
+use raycourse::stages;
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
+use crate::commands::options::SceneArgs;
 
 /// Follow one sample of one pixel ray by ray: each hit, the light, the next
 /// direction and what each ray adds, computed by the renderer's own functions.
@@ -35,21 +35,8 @@ struct ProbeArgs {
     /// Print one JSON document instead of text.
     #[arg(long)]
     json: bool,
-    /// Image width in pixels.
-    #[arg(long)]
-    width: Option<NonZeroU32>,
-    /// Image height in pixels.
-    #[arg(long)]
-    height: Option<NonZeroU32>,
-    /// Samples per pixel.
-    #[arg(long)]
-    spp: Option<NonZeroU32>,
-    /// Bounce limit for mirrors, glass and indirect light.
-    #[arg(long)]
-    bounces: Option<u32>,
-    /// Seed of the random generators.
-    #[arg(long)]
-    seed: Option<u64>,
+    #[command(flatten)]
+    scene_options: SceneArgs,
 }
 
 /// The `probe` command.
@@ -64,14 +51,7 @@ inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = ProbeArgs::from_arg_matches(matches)?;
-    let overrides = Overrides {
-        width: args.width,
-        height: args.height,
-        samples: args.spp,
-        bounces: args.bounces,
-        seed: args.seed,
-        ..Overrides::default()
-    };
+    let overrides = args.scene_options.overrides();
     let (first, second) = (&args.first, &args.second);
     let (scene, pixel) = match (&args.scene, &args.third) {
         (Some(file), None) => (raycourse::load_scene(file, &overrides)?, [first, second]),
