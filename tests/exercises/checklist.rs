@@ -20,6 +20,9 @@ pub struct Exercise {
     /// Its line in the checklist: the number and the function, such as
     /// `s1_2_sphere_intersect`.
     pub name: &'static str,
+    /// The stage whose image first shows it: when that stage, or a later one of the
+    /// session, differs while every known answer passes, the checklist names it.
+    pub shown_by: &'static str,
     /// The exercises of its session whose functions its check calls besides its own.
     pub needs: &'static [&'static str],
     /// The check: known answers.
@@ -54,6 +57,7 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     let (mut passed, mut failed) = (0, 0);
     let current = sessions.len() as u32;
     let mut next: Option<String> = None;
+    let mut stage_next: Option<String> = None;
     let mut done = 0;
     for (index, exercises) in sessions.iter().enumerate() {
         let session = index as u32 + 1;
@@ -75,7 +79,9 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
             }
             verdicts.insert(exercise.id, verdict);
         }
+        let mut shown: Vec<&str> = vec![];
         for stage in stages().filter(|s| s.session == session) {
+            shown.push(stage.name);
             let name = images::check_name(stage);
             if chosen(&name) {
                 let verdict = caught(|| images::check(stage));
@@ -83,7 +89,14 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
                 if verdict == Verdict::Passed {
                     passed += 1
                 } else {
-                    failed += 1
+                    failed += 1;
+                    let used = used_by(exercises, &shown);
+                    if let Some(look) = look_again(&verdict, &verdicts, &used, &markers) {
+                        println!("    {look}");
+                        if session == current && stage_next.is_none() {
+                            stage_next = Some(format!("the stage `{}`: {look}", stage.name));
+                        }
+                    }
                 }
             }
         }
@@ -94,7 +107,12 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
         failed += 1;
     }
     println!("\nchecklist: {passed} passed; {failed} failed");
-    progress(current, sessions.last().map_or(0, |e| e.len()), done, next);
+    progress(
+        current,
+        sessions.last().map_or(0, |e| e.len()),
+        done,
+        next.or(stage_next),
+    );
     if failed == 0 {
         ExitCode::SUCCESS
     } else {
@@ -102,7 +120,39 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     }
 }
 
-/// The closing line: how many of the last session's exercises pass, and which is next.
+/// The exercises of `exercises` whose stage is one of `shown` (the session's stages
+/// so far): those a stage's image relies on.
+fn used_by(exercises: &[Exercise], shown: &[&str]) -> Vec<&'static str> {
+    exercises
+        .iter()
+        .filter(|e| shown.contains(&e.shown_by))
+        .map(|e| e.id)
+        .collect()
+}
+
+/// For a stage that differs while every exercise so far passes its known answers
+/// (their tests cannot see everything an image needs): the exercises to look at
+/// again. `None` when an exercise fails or a stub stopped the stage, which its line
+/// already names.
+fn look_again(
+    verdict: &Verdict,
+    earlier: &HashMap<&str, Verdict>,
+    used: &[&str],
+    markers: &HashMap<String, Marker>,
+) -> Option<String> {
+    let all_pass = earlier.values().all(|v| *v == Verdict::Passed);
+    if !matches!(verdict, Verdict::Failed(_)) || !all_pass || used.is_empty() {
+        return None;
+    }
+    let names: Vec<String> = used.iter().map(|id| describe(id, markers)).collect();
+    Some(format!(
+        "every exercise passes its known answers, so look again at how the image uses exercise {}",
+        names.join("; exercise ")
+    ))
+}
+
+/// The closing line: how many of the last session's exercises pass, and which is next
+/// (an exercise, or a stage that differs although its exercises pass).
 fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
     match next {
         Some(next) => {

@@ -18,6 +18,7 @@ use raycourse::check::compare::{
     Linear, brightness_ratio, compare_blocks, compare_pixels, displayed,
 };
 use raycourse::maths::{Real, to_double};
+use raycourse::scene::Settings;
 use raycourse::{Film, Overrides, Stage, render, stages};
 
 use crate::known::Outcome;
@@ -59,9 +60,15 @@ fn course_samples(stage: &Stage) -> u32 {
 }
 
 /// The stage rendered small (`noisy`: the size of Monte Carlo stages), with
-/// `samples` per pixel and `seed`, and its gamma; by the fast engine (the same
+/// `samples` per pixel and `seed`, and its settings; by the fast engine (the same
 /// image, sooner) for a reference.
-fn film(stage: &Stage, noisy: bool, samples: u32, seed: Option<u64>, fast: bool) -> (Film, Real) {
+fn film(
+    stage: &Stage,
+    noisy: bool,
+    samples: u32,
+    seed: Option<u64>,
+    fast: bool,
+) -> (Film, Settings) {
     let size = if noisy { NOISY_SIZE } else { EXACT_SIZE };
     let overrides = Overrides {
         width: NonZeroU32::new(size),
@@ -74,7 +81,7 @@ fn film(stage: &Stage, noisy: bool, samples: u32, seed: Option<u64>, fast: bool)
     let scene = stage
         .scene(&overrides)
         .expect("the stages' scene files are valid");
-    (render(&scene).film, scene.settings.gamma)
+    (render(&scene).film, scene.settings)
 }
 
 fn reference_path(stage: &Stage) -> PathBuf {
@@ -88,11 +95,12 @@ fn reference_path(stage: &Stage) -> PathBuf {
 pub fn check(stage: &Stage) -> Outcome {
     let samples = course_samples(stage);
     let noisy = samples > 1;
-    let (film, gamma) = film(stage, noisy, samples, None, false);
+    let (film, settings) = film(stage, noisy, samples, None, false);
+    let gamma = settings.gamma;
     let reference = reference_path(stage);
     let yours = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{}.png", stage.name));
     let found = if noisy {
-        compare_noisy(&film, &read_16(&reference, gamma)?, gamma)
+        compare_noisy(&film, &read_16(&reference, gamma)?, &settings)
     } else {
         compare_exact(&displayed(&film, gamma), &read_8(&reference)?, gamma)
     };
@@ -134,6 +142,7 @@ fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome
         &Linear::from_rgb8(yours, gamma),
         &Linear::from_rgb8(reference, gamma),
         gamma,
+        false,
     ) {
         why += &format!("; {hint}");
     }
@@ -141,7 +150,8 @@ fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome
 }
 
 /// A Monte Carlo stage: block by block against the noise, then the hints.
-fn compare_noisy(yours: &Film, reference: &Linear, gamma: Real) -> Outcome {
+fn compare_noisy(yours: &Film, reference: &Linear, settings: &Settings) -> Outcome {
+    let gamma = settings.gamma;
     let linear = Linear::from_film(yours, gamma);
     let outcome = compare_blocks(&linear, reference, gamma);
     if !outcome.image_differs {
@@ -154,8 +164,8 @@ fn compare_noisy(yours: &Film, reference: &Linear, gamma: Real) -> Outcome {
     );
     let shown = displayed(yours, gamma);
     let reference_shown = to_rgb8(reference, gamma);
-    if let Some(hint) =
-        flip_hint(&shown, &reference_shown).or_else(|| brightness_hint(&linear, reference, gamma))
+    if let Some(hint) = flip_hint(&shown, &reference_shown)
+        .or_else(|| brightness_hint(&linear, reference, gamma, settings.indirect))
     {
         why += &format!("; {hint}");
     }
@@ -213,8 +223,15 @@ fn gamma_hint(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Option<Str
     }
 }
 
-/// The mistake an image brighter or darker everywhere by a telling factor shows.
-fn brightness_hint(yours: &Linear, reference: &Linear, gamma: Real) -> Option<String> {
+/// The mistake an image brighter or darker everywhere by a telling factor shows; a
+/// factor of two points at the bounce's weight only where the stage has `bounces`
+/// (indirect light).
+fn brightness_hint(
+    yours: &Linear,
+    reference: &Linear,
+    gamma: Real,
+    bounces: bool,
+) -> Option<String> {
     let ratio = brightness_ratio(yours, reference, gamma);
     let mean = ratio.iter().sum::<f64>() / 3.0;
     let near = |target: f64| (mean / target - 1.0).abs() < 0.08;
@@ -223,7 +240,7 @@ fn brightness_hint(yours: &Linear, reference: &Linear, gamma: Real) -> Option<St
         "about pi times too bright: a diffuse surface reflects albedo / pi (the BRDF), and the light's power spreads over 4 pi r^2"
     } else if near(1.0 / pi) {
         "about pi times too dark: is 1 / pi counted twice, or the cosine-weighted pdf's pi not cancelled?"
-    } else if near(2.0) || near(0.5) {
+    } else if bounces && (near(2.0) || near(0.5)) {
         "about twice too bright or too dark: the weight of a bounce must match how its direction was drawn (for a cosine-weighted direction the cosine and pi cancel, leaving the albedo)"
     } else if (mean - 1.0).abs() > 0.05 {
         return Some(format!(
@@ -300,11 +317,11 @@ pub fn write_references() -> ExitCode {
         let samples = course_samples(stage);
         let written = if samples > 1 {
             let more = samples * REFERENCE_FACTOR;
-            let (film, gamma) = film(stage, true, more, Some(REFERENCE_SEED), true);
-            to_rgb16(&film, gamma).save(&path)
+            let (film, settings) = film(stage, true, more, Some(REFERENCE_SEED), true);
+            to_rgb16(&film, settings.gamma).save(&path)
         } else {
-            let (film, gamma) = film(stage, false, 1, None, true);
-            displayed(&film, gamma).save(&path)
+            let (film, settings) = film(stage, false, 1, None, true);
+            displayed(&film, settings.gamma).save(&path)
         };
         match written {
             Ok(()) => println!("{}", path.display()),

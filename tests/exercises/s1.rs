@@ -18,24 +18,28 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         id: "s1.1",
         name: "s1_1_camera_pixel_direction",
+        shown_by: "white-disk",
         needs: &[],
         check: pixel_direction,
     },
     Exercise {
         id: "s1.2",
         name: "s1_2_sphere_intersect",
+        shown_by: "white-disk",
         needs: &[],
         check: sphere_distance,
     },
     Exercise {
         id: "s1.3",
         name: "s1_3_scene_nearest_sphere",
+        shown_by: "spheres",
         needs: &["s1.2"],
         check: nearest_sphere,
     },
     Exercise {
         id: "s1.4",
         name: "s1_4_point_light_lambert",
+        shown_by: "shading",
         needs: &[],
         check: lambert,
     },

@@ -1,7 +1,7 @@
 //! Session 3: the cosine-weighted direction, its frame, the indirect bounce, the
 //! Gaussian pixel filter.
 
-use raycourse::geometry::Ray;
+use raycourse::geometry::{Hit, Ray};
 use raycourse::integrator::Tracer;
 use raycourse::maths::frame::Frame;
 use raycourse::maths::sampling::{sample_cosine_hemisphere, sample_gaussian};
@@ -16,24 +16,28 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         id: "s3.1",
         name: "s3_1_sample_cosine_hemisphere",
+        shown_by: "indirect",
         needs: &[],
         check: cosine_direction,
     },
     Exercise {
         id: "s3.2",
         name: "s3_2_frame_new",
+        shown_by: "indirect",
         needs: &[],
         check: frame,
     },
     Exercise {
         id: "s3.3",
         name: "s3_3_tracer_indirect_light",
+        shown_by: "indirect",
         needs: &["s3.1", "s3.2"],
         check: indirect_bounce,
     },
     Exercise {
         id: "s3.4",
         name: "s3_4_sample_gaussian",
+        shown_by: "antialiasing",
         needs: &[],
         check: gaussian,
     },
@@ -106,9 +110,12 @@ fn frame() -> Outcome {
 /// A furnace with a known answer: inside a sphere of radius 10 and albedo 0.5, a
 /// point light of power `Phi = 800 pi^2` at its centre lights every point of the
 /// wall head on, so the wall sends `Phi / (4 pi 10^2) * 1 * 0.5 / pi = 1` in every
-/// direction. One bounce from a point of the floor then brings back `albedo * 1`
-/// whichever direction it draws, if its weight matches its density: the mean of
-/// 20,000 bounces of albedo (0.8, 0.4, 0.2) must be (0.8, 0.4, 0.2) within 3%.
+/// direction by direct light alone. Every point of the wall sees the same wall, so
+/// with `k` bounces left it sends `L_k = 1 + 0.5 L_(k-1)`, `L_0 = 1`: `L_1 = 1.5`,
+/// `L_2 = 1.75`. A bounce from the floor with `b` bounces allowed brings back
+/// `albedo * L_(b-1)` whichever direction it draws, if its weight matches its
+/// density, and its ray starts off the floor so that it meets the wall, not the
+/// floor it leaves.
 fn indirect_bounce() -> Outcome {
     let furnace = scene(
         "[render]\nwidth = 8\nheight = 8\nbounces = 1\nindirect = true\ngamma = 2.2\n\
@@ -117,22 +124,76 @@ fn indirect_bounce() -> Outcome {
          [[spheres]]\ncentre = [0, 0, 0]\nradius = 10\nmaterial = { diffuse = [0.5, 0.5, 0.5] }\n",
     );
     let mut tracer = Tracer::new(&furnace);
+    // A point of the floor whose coordinates are rounded, as a hit's usually are.
+    let down = Vec3::new(0.3, -1.0, 0.2).normalize();
     let floor = tracer
-        .trace(&Ray::new(Vec3::ZERO, -Vec3::Y))
+        .trace(&Ray::new(Vec3::ZERO, down))
         .expect("the ray down meets the furnace's floor")
         .facing_the_ray();
-    let albedo = Colour::new(0.8, 0.4, 0.2);
-    let n = 20_000;
-    let mean = (0..n)
-        .map(|_| tracer.indirect_light(&floor, albedo, 1))
+    bounce_start(&mut tracer, &floor)?;
+    bounce_weight(&mut tracer, &floor)?;
+    bounces_passed_on(&mut tracer, &floor)
+}
+
+/// The albedo of the furnace's checks.
+const ALBEDO: Colour = Colour::new(0.8, 0.4, 0.2);
+
+/// The mean of `n` bounces from `floor` with `bounces` allowed, over `ALBEDO`.
+fn mean_bounce(tracer: &mut Tracer, floor: &Hit, bounces: u32, n: u32) -> Colour {
+    (0..n)
+        .map(|_| tracer.indirect_light(floor, ALBEDO, bounces))
         .sum::<Colour>()
-        / n as Real;
-    let right = (mean / albedo - Colour::ONE).abs().max_element() < 0.03;
+        / n as Real
+}
+
+/// One bounce allowed: the mean of 20,000 bounces is `albedo * L_0 = albedo`
+/// within 3%.
+fn bounce_weight(tracer: &mut Tracer, floor: &Hit) -> Outcome {
+    let n = 20_000;
+    let mean = mean_bounce(tracer, floor, 1, n);
+    let right = (mean / ALBEDO - Colour::ONE).abs().max_element() < 0.03;
     ensure(right, || {
         format!(
             "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo (0.8, 0.4, 0.2) gave {}, expected (0.8, 0.4, 0.2){}: the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
             vec(mean),
-            weight_hint((mean / albedo).element_sum() / 3.0)
+            weight_hint((mean / ALBEDO).element_sum() / 3.0)
+        )
+    })
+}
+
+/// The bounce's ray, written down by the tracer's log, meets the wall at a
+/// distance `20 cos(theta)`, never the floor it starts from at a distance of the
+/// order of the rounding (`1e-15`).
+fn bounce_start(tracer: &mut Tracer, floor: &Hit) -> Outcome {
+    tracer.log = Some(vec![]);
+    for _ in 0..200 {
+        tracer.indirect_light(floor, ALBEDO, 1);
+    }
+    let log = tracer.log.take().unwrap_or_default();
+    let own = log.iter().filter_map(|r| r.hit).find(|h| h.t < 1e-9);
+    ensure(own.is_none(), || {
+        format!(
+            "a bounce from the furnace's floor met the floor itself at t = {:.1e}: start the bounce's ray off the surface with hit.spawn(direction) (session 2), not at the hit point",
+            own.map_or(0.0, |h| h.t)
+        )
+    })
+}
+
+/// Three bounces allowed: the floor sees the wall with two bounces left,
+/// `albedo * L_2 = 1.75 albedo`; a path cut after the first bounce brings back
+/// `albedo` alone.
+fn bounces_passed_on(tracer: &mut Tracer, floor: &Hit) -> Outcome {
+    let mean = mean_bounce(tracer, floor, 3, 2_000);
+    let ratio = (mean / ALBEDO).element_sum() / 3.0;
+    ensure((ratio / 1.75 - 1.0).abs() < 0.03, || {
+        let hint = if (ratio - 1.0).abs() < 0.03 {
+            ": the wall was seen with no bounce left; the bounce's ray goes on with the bounces left after this one, bounces - 1"
+        } else {
+            ""
+        };
+        format!(
+            "inside the same furnace, with 3 bounces allowed, the mean bounce from the floor gave {}, expected 1.75 albedo = (1.4, 0.7, 0.35): the wall seen with 2 bounces left sends 1 + 0.5 (1 + 0.5){hint}",
+            vec(mean)
         )
     })
 }

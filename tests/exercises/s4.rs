@@ -13,24 +13,28 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         id: "s4.1",
         name: "s4_1_cone_sample",
+        shown_by: "light-sampling",
         needs: &[],
         check: cone_sample,
     },
     Exercise {
         id: "s4.2",
         name: "s4_2_cone_pdf",
+        shown_by: "light-sampling",
         needs: &[],
         check: cone_pdf,
     },
     Exercise {
         id: "s4.3",
         name: "s4_3_sample_disk",
+        shown_by: "depth-of-field",
         needs: &[],
         check: disk,
     },
     Exercise {
         id: "s4.4",
         name: "s4_4_thin_lens_refocus",
+        shown_by: "depth-of-field",
         needs: &["s4.3"],
         check: thin_lens,
     },

@@ -11,12 +11,14 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         id: "s5.1",
         name: "s5_1_intersect_triangle",
+        shown_by: "mesh",
         needs: &[],
         check: triangle,
     },
     Exercise {
         id: "s5.2",
         name: "s5_2_aabb_entry",
+        shown_by: "mesh-bbox",
         needs: &[],
         check: slab,
     },

@@ -16,18 +16,21 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         id: "s6.1",
         name: "s6_1_bvh_build",
+        shown_by: "bvh",
         needs: &[],
         check: build,
     },
     Exercise {
         id: "s6.2",
         name: "s6_2_bvh_nearest",
+        shown_by: "bvh",
         needs: &[],
         check: walk,
     },
     Exercise {
         id: "s6.3",
         name: "s6_3_mesh_smooth_normal",
+        shown_by: "smooth-normals",
         needs: &[],
         check: smooth_normal,
     },

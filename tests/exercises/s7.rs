@@ -13,12 +13,14 @@ pub const EXERCISES: &[Exercise] = &[
     Exercise {
         id: "s7.1",
         name: "s7_1_texture_colour",
+        shown_by: "textures",
         needs: &[],
         check: lookup,
     },
     Exercise {
         id: "s7.2",
         name: "s7_2_aim",
+        shown_by: "camera",
         needs: &[],
         check: orientation,
     },
