@@ -11,7 +11,7 @@ use glam::Vec4;
 use crate::acceleration::Bvh;
 use crate::fast::sah;
 use crate::fast::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
-use crate::geometry::{Ray, ShearedRay, TriangleTest};
+use crate::geometry::{Aabb, Ray, ShearedRay, TriangleTest};
 use crate::maths::{Real, Vec3, to_single};
 use crate::meshes::{Mesh, MeshHit, Search};
 
@@ -51,6 +51,10 @@ impl WideNode {
 /// A bounding volume hierarchy flattened for traversal.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FastBvh {
+    /// The box around the whole mesh, in the mesh's precision: a ray that misses
+    /// it (most rays, in a room where the mesh is small) is turned away by one
+    /// slab test, before anything else is made for it.
+    bounds: Aabb,
     /// The nodes, the root first.
     nodes: Vec<WideNode>,
     /// Each leaf's triangles in groups of four, in single precision, for the
@@ -93,13 +97,13 @@ struct WideRay {
 }
 
 impl WideRay {
-    fn new(ray: &Ray) -> WideRay {
+    /// `ray`, whose inverse direction is `inv_direction`, for the box tests.
+    fn new(ray: &Ray, inv_direction: Vec3) -> WideRay {
         let splat = |f: fn(Real) -> f32| [0, 1, 2].map(|axis| Vec4::splat(f(ray.origin[axis])));
         WideRay {
             above: splat(round_up),
             below: splat(round_down),
-            inv_direction: [0, 1, 2]
-                .map(|axis| Vec4::splat(to_single(ray.direction[axis].recip()))),
+            inv_direction: [0, 1, 2].map(|axis| Vec4::splat(to_single(inv_direction[axis]))),
         }
     }
 
@@ -244,6 +248,7 @@ impl FastBvh {
     pub fn build(mesh: &Mesh, max_leaf: u16) -> FastBvh {
         let bvh = sah::build(mesh, max_leaf.into(), GROUP);
         let mut fast = FastBvh {
+            bounds: bvh.nodes.first().map_or(Aabb::EMPTY, |root| root.bounds),
             nodes: vec![],
             groups: vec![],
             ids: Vec::with_capacity(mesh.triangles.len()),
@@ -331,9 +336,10 @@ impl Search for FastBvh {
     /// found meanwhile is closer than its box. In a leaf, only the triangles the
     /// pre-test keeps get the exact test.
     fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
-        let wide = WideRay::new(ray);
-        let sheared = ShearedRay::new(ray);
-        let group_ray = pretest_ray(mesh, &sheared);
+        let inv_direction = ray.direction.recip();
+        self.bounds.entry(ray, inv_direction, t_max)?;
+        let wide = WideRay::new(ray, inv_direction);
+        let mut leaf_rays = LeafRays::default();
         let mut best: Option<MeshHit> = None;
         // The box test's limit, and the triangle test's (which lets an equal
         // distance through, for the lower index to win).
@@ -351,9 +357,10 @@ impl Search for FastBvh {
                 next = stack.push_all_but_nearest(node, mask, entry);
                 continue;
             }
-            for slot in self.candidates(pending, group_ray.as_ref()) {
+            let (sheared, group_ray) = leaf_rays.get(mesh, ray);
+            for slot in self.candidates(pending, group_ray) {
                 let triangle = self.ids[slot];
-                if let Some(at) = mesh.hit_triangle(ray, &sheared, triangle, triangle_limit)
+                if let Some(at) = mesh.hit_triangle(ray, sheared, triangle, triangle_limit)
                     && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
                 {
                     best = Some(MeshHit { triangle, at });
@@ -369,9 +376,12 @@ impl Search for FastBvh {
     /// Whether `ray` meets any triangle of `mesh` closer than `t_max`, stopping at
     /// the first one found.
     fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
-        let wide = WideRay::new(ray);
-        let sheared = ShearedRay::new(ray);
-        let group_ray = pretest_ray(mesh, &sheared);
+        let inv_direction = ray.direction.recip();
+        if self.bounds.entry(ray, inv_direction, t_max).is_none() {
+            return false;
+        }
+        let wide = WideRay::new(ray, inv_direction);
+        let mut leaf_rays = LeafRays::default();
         let limit = Limit::new(t_max);
         let mut stack = Stack::new();
         stack.push(ROOT);
@@ -388,14 +398,37 @@ impl Search for FastBvh {
                         entry: 0.0,
                     });
                 }
-            } else if self.candidates(pending, group_ray.as_ref()).any(|slot| {
-                let id = self.ids[slot];
-                mesh.hit_triangle(ray, &sheared, id, t_max).is_some()
-            }) {
-                return true;
+            } else {
+                let (sheared, group_ray) = leaf_rays.get(mesh, ray);
+                let mut slots = self.candidates(pending, group_ray);
+                if slots.any(|slot| {
+                    mesh.hit_triangle(ray, sheared, self.ids[slot], t_max)
+                        .is_some()
+                }) {
+                    return true;
+                }
             }
         }
         false
+    }
+}
+
+/// The ray as the triangle tests take it, made when the traversal reaches its first
+/// leaf: a ray that enters no leaf's box (most rays, in a room where the mesh is
+/// small) never pays for it.
+#[derive(Default)]
+struct LeafRays(Option<(ShearedRay, Option<GroupRay>)>);
+
+impl LeafRays {
+    /// The sheared ray of the exact test and the ray of the pre-test, if any.
+    #[inline]
+    fn get(&mut self, mesh: &Mesh, ray: &Ray) -> (&ShearedRay, Option<&GroupRay>) {
+        let (sheared, group_ray) = self.0.get_or_insert_with(|| {
+            let sheared = ShearedRay::new(ray);
+            let group_ray = pretest_ray(mesh, &sheared);
+            (sheared, group_ray)
+        });
+        (sheared, group_ray.as_ref())
     }
 }
 

@@ -10,6 +10,7 @@
 //! | [`sphere_lanes`] | 3 | the nearest sphere of each of four rays | `Scene::nearest_sphere` |
 //! | [`paths_at_once`] | 3 | a row's pixels four paths at a time | `pixel` and `radiance` |
 //! | [`direct_at_once`] | 3 | the direct light of four paths, their shadow rays traced together | `direct_light` |
+//! | [`meshes_at_once`] | 5 | the meshes those paths meet, searched after their spheres | `Scene::intersect` |
 //! | [`sah`] | 6 | splits chosen by the surface area heuristic | `Bvh::build` |
 //! | [`fast_bvh`] | 6 | four boxes and four triangles tested at once | `Bvh` |
 //! | [`triangle_group`] | 6 | the single-precision pre-test of four triangles | the ray-triangle test |
@@ -24,6 +25,8 @@ pub mod sphere_lanes;
 
 #[cfg(feature = "s6")]
 pub mod fast_bvh;
+#[cfg(feature = "s5")]
+pub mod meshes_at_once;
 #[cfg(feature = "s6")]
 pub mod sah;
 #[cfg(feature = "s6")]

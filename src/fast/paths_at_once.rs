@@ -14,13 +14,17 @@
 //! pixel's own random numbers: what each diffuse hit adds is kept (a `Level`) and
 //! summed from the end of the path back to its start, as the recursion does when it
 //! returns. So each pixel gets the same value to the last bit, and the image the same
-//! bytes (a test renders the sphere stages both ways). It models only what the
-//! sphere rooms need: diffuse spheres, a point or sphere light, bounce limit and
-//! Russian roulette; any other scene takes the course's recursion.
+//! bytes (a test renders every stage both ways). It models only what the rooms of
+//! the course need: diffuse spheres and, from session 5, meshes (a mesh is always
+//! diffuse; its triangles are searched one ray at a time, after the spheres, in
+//! `fast/meshes_at_once.rs`), a point or sphere light, bounce limit and Russian
+//! roulette; any other scene takes the course's recursion.
 //!
 //! [`SphereLanes::nearest_of_four`]: crate::fast::sphere_lanes::SphereLanes::nearest_of_four
 
 use crate::fast::direct_at_once::Direct;
+#[cfg(feature = "s5")]
+use crate::fast::meshes_at_once;
 use crate::fast::sphere_lanes::SphereLanes;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
@@ -33,12 +37,8 @@ use crate::scene::Scene;
 /// How many paths one thread follows at once: the rays of one four-ray test.
 const PATHS: usize = 4;
 
-/// Whether [`row`] can render `scene`: spheres only, all of them diffuse.
+/// Whether [`row`] can render `scene`: every sphere diffuse (a mesh always is).
 pub fn applies(scene: &Scene) -> bool {
-    #[cfg(feature = "s5")]
-    if !scene.meshes.is_empty() {
-        return false;
-    }
     scene
         .spheres
         .iter()
@@ -234,15 +234,25 @@ impl<'s> Path<'s> {
     /// path.
     fn hit(&mut self, nearest: Option<(Real, usize)>) -> Option<(Hit, Colour)> {
         self.tracer.rays += 1;
-        let Some((t, object)) = nearest else {
+        let Some(hit) = self.meet(nearest) else {
             self.ended = true;
             return None;
         };
-        let hit = self.tracer.scene.spheres[object].hit_at(&self.ray, t, object);
         let Material::Diffuse { albedo } = hit.material else {
-            unreachable!("paths at once are used only where every sphere is diffuse")
+            unreachable!("paths at once are used only where every object is diffuse")
         };
         Some((hit.facing_the_ray(), albedo))
+    }
+
+    /// The hit record of the nearest object the ray meets, `nearest` being its
+    /// nearest sphere: from session 5, a mesh's if one is closer.
+    fn meet(&self, nearest: Option<(Real, usize)>) -> Option<Hit> {
+        let scene = self.tracer.scene;
+        #[cfg(feature = "s5")]
+        if let Some(hit) = meshes_at_once::nearer_mesh(scene, &self.ray, nearest) {
+            return Some(hit);
+        }
+        nearest.map(|(t, object)| scene.spheres[object].hit_at(&self.ray, t, object))
     }
 
     /// Goes on from `hit`, of a surface of `albedo`, once its direct light is
@@ -268,11 +278,16 @@ impl<'s> Path<'s> {
         self.direct.as_ref().and_then(Direct::ray)
     }
 
-    /// Completes the last hit with its direct light, `shadow` being the nearest hit
-    /// of its shadow ray, and ends the sample if the path ended there.
+    /// Completes the last hit with its direct light, `shadow` being the nearest
+    /// sphere of its shadow ray (from session 5 the meshes are searched too), and
+    /// ends the sample if the path ended there.
     fn light(&mut self, shadow: Option<(Real, usize)>) {
         if let (Some(direct), Some(level)) = (self.direct.take(), self.levels.last_mut()) {
             level.direct = direct.resolve(shadow);
+            #[cfg(feature = "s5")]
+            if meshes_at_once::in_the_way(self.tracer.scene, &direct, shadow) {
+                level.direct = Colour::ZERO;
+            }
         }
         if self.ended {
             self.ended = false;

@@ -55,7 +55,15 @@ fn same(
         "{}: --fast is obeyed",
         stage.name
     );
-    let (by_course, by_fast) = (render(&course), render(&fast));
+    let render = agree(stage.name, &course, &fast);
+    (fast, render)
+}
+
+/// Renders `course` and `fast`, the same scene without and with the fast engine,
+/// asserts that they give the same radiance to the bit and the same counts, and
+/// returns the fast engine's render.
+fn agree(name: &str, course: &Scene, fast: &Scene) -> Render {
+    let (by_course, by_fast) = (render(course), render(fast));
     let bits = |r: &Render| -> Vec<_> {
         r.film
             .pixels
@@ -65,24 +73,16 @@ fn same(
     };
     let (a, b) = (bits(&by_course), bits(&by_fast));
     let first = a.iter().zip(&b).position(|(a, b)| a != b);
-    assert_eq!(first, None, "{}: first pixel that differs", stage.name);
-    assert_eq!(by_course.rays, by_fast.rays, "{}: rays", stage.name);
-    assert_eq!(
-        by_course.samples, by_fast.samples,
-        "{}: samples",
-        stage.name
-    );
-    assert_eq!(
-        by_course.dropped, by_fast.dropped,
-        "{}: dropped",
-        stage.name
-    );
-    (fast, by_fast)
+    assert_eq!(first, None, "{name}: first pixel that differs");
+    assert_eq!(by_course.rays, by_fast.rays, "{name}: rays");
+    assert_eq!(by_course.samples, by_fast.samples, "{name}: samples");
+    assert_eq!(by_course.dropped, by_fast.dropped, "{name}: dropped");
+    by_fast
 }
 
-/// The stages whose objects are all diffuse spheres, in the course's order: the fast
-/// engine follows their paths four at a time.
-const DIFFUSE_SPHERE_STAGES: [&str; 11] = [
+/// The stages whose objects are all diffuse (spheres, and meshes, which always
+/// are), in the course's order: the fast engine follows their paths four at a time.
+const DIFFUSE_STAGES: [&str; 17] = [
     "white-disk",
     "shading",
     "spheres",
@@ -94,6 +94,12 @@ const DIFFUSE_SPHERE_STAGES: [&str; 11] = [
     "light-sampling",
     "depth-of-field",
     "russian-roulette",
+    "mesh",
+    "mesh-bbox",
+    "bvh",
+    "smooth-normals",
+    "textures",
+    "camera",
 ];
 
 #[test]
@@ -116,9 +122,9 @@ fn every_stage_renders_the_same_bytes_with_the_fast_engine() {
             }
         }
     }
-    // The mirror, glass and mesh stages take the course's recursion; the stages of
-    // later sessions are absent from an earlier session's build.
-    let expected: Vec<&str> = DIFFUSE_SPHERE_STAGES
+    // The mirror, glass and Fresnel stages take the course's recursion; the stages
+    // of later sessions are absent from an earlier session's build.
+    let expected: Vec<&str> = DIFFUSE_STAGES
         .into_iter()
         .filter(|name| stages().any(|stage| stage.name == *name))
         .collect();
@@ -153,5 +159,45 @@ fn stratified_and_sobol_numbers_are_drawn_in_the_course_order() {
             let (scene, _) = same(stage, 8, Overrides::default(), Some(sampler));
             assert!(paths_at_once::applies(&scene), "{name}");
         }
+    }
+}
+
+/// The mesh stages lit by a point light instead of their sphere light, with shadows:
+/// a shadow ray is blocked by the cow's triangles as well as by the spheres, and
+/// the fast engine's test of the meshes (`meshes_at_once::in_the_way`) decides as
+/// the course's `Scene::occluded` does, with the brute force and with the fast
+/// hierarchy.
+#[cfg(feature = "s6")]
+#[test]
+fn meshes_cast_the_same_shadows_under_a_point_light() {
+    for name in ["mesh", "bvh"] {
+        let stage = stages().find(|s| s.name == name).unwrap();
+        let source = stage
+            .source
+            .replacen("radius = 5\n", "", 1)
+            .replace("light_sampling = true", "shadows = true");
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(stage.path);
+        let scene = |fast: bool| {
+            let overrides = Overrides {
+                width: NonZeroU32::new(24),
+                height: NonZeroU32::new(20),
+                samples: NonZeroU32::new(2),
+                fast,
+                ..Overrides::default()
+            };
+            raycourse::parse_scene(&source, &path, &overrides).unwrap()
+        };
+        let (course, fast) = (scene(false), scene(true));
+        assert!(
+            course
+                .light
+                .is_some_and(|l| matches!(l, raycourse::lights::Light::Point(_)))
+        );
+        assert!(
+            course.settings.shadows && paths_at_once::applies(&fast),
+            "{name}"
+        );
+        let render = agree(name, &course, &fast);
+        assert!(render.rays > 2 * 24 * 20 * 2, "{name}: shadow rays traced");
     }
 }
