@@ -47,6 +47,7 @@ impl Hit {
     }
     // ANCHOR_END: spawn_epsilon
 
+    // ANCHOR: spawn_towards
     /// A ray from the hit point towards `target`, with the distance to the target
     /// measured from the ray's (offset) origin; used for shadow rays.
     ///
@@ -55,6 +56,7 @@ impl Hit {
         let ray = self.spawn((target - self.point).normalize());
         (ray, ray.origin.distance(target))
     }
+    // ANCHOR_END: spawn_towards
 }
 
 // ANCHOR: one_ulp_towards

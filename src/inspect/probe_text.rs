@@ -44,7 +44,7 @@ impl Display for Probe {
 fn write_level(f: &mut Formatter, level: &Level) -> fmt::Result {
     writeln!(
         f,
-        "  ray      O = {}  u = {}",
+        "  ray      O = {}  d = {}",
         triple(level.origin),
         triple(level.direction)
     )?;
@@ -97,7 +97,7 @@ fn write_direct(f: &mut Formatter, direct: &Direct) -> fmt::Result {
         Some(ray) => {
             writeln!(
                 f,
-                "  {}  shadow ray O = {}  u = {}",
+                "  {}  shadow ray O = {}  d = {}",
                 direct.light,
                 triple(ray.origin),
                 triple(ray.direction)
@@ -118,7 +118,7 @@ fn write_direct(f: &mut Formatter, direct: &Direct) -> fmt::Result {
 fn write_next(f: &mut Formatter, next: &Next, bounces_left: u32) -> fmt::Result {
     writeln!(
         f,
-        "  next     {}: u' = {}",
+        "  next     {}: d' = {}",
         next.kind,
         triple(next.direction)
     )?;
