@@ -1,13 +1,17 @@
-//! The crate's fast BVH beside obvhs (a pure-Rust compressed wide BVH, the peer a
-//! Rust user would pick) on the same rays, one thread, in one run: camera rays and
-//! diffuse rays (closest hit), shadow rays (any hit) against the ogre.
+//! The crate's fast BVH beside its peers on the same rays, one thread, in one run:
+//! obvhs (a pure-Rust compressed wide BVH, the peer a Rust user would pick) and
+//! tinybvh 1.6.8 (C++, header-only, Jacco Bikker's; `tiny_bvh/`, compiled with the
+//! host's instructions by `build.rs`): its binary BVH, its 4-wide `BVH4_CPU` and,
+//! where the processor has AVX2, its 8-wide `BVH8_CPU`, each built with spatial
+//! splits (`BuildHQ`). Camera rays and diffuse rays (closest hit), shadow rays (any
+//! hit) against the ogre.
 //!
 //! The rays are the `.rays` sets of the Embree benchmark when `RAYSETS` names their
 //! folder (`primary.rays`, `diffuse.rays`, `shadow.rays`), so the figures sit beside
 //! Embree's; otherwise sets made here the same way (a camera from the front, right and
 //! above; cosine-weighted bounces from its hits; shadow rays to a sphere light above).
-//! The hits the two libraries find are counted; they agree but where single
-//! precision (obvhs) and double precision (the crate) round a grazing ray apart.
+//! The hits each library finds are counted; they agree but where single precision
+//! (the peers) and double precision (the crate) round a grazing ray apart.
 //!
 //! `cargo bench -p raycourse-benches --bench peers` (or with
 //! `RAYSETS=/tmp/raysets/ogre` before it).
@@ -29,8 +33,16 @@ use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, to_single, uniform};
 use raycourse::meshes::{Mesh, Placement, read_obj};
 use raycourse::studies::rayset::{RayKind, RaySet};
 
+use crate::tinybvh::{Layout, TinyBvh, TinyRays};
+
+mod tinybvh;
+
 /// Timed passes per measurement; the median is reported.
 const PASSES: usize = 7;
+
+/// A library's name and how it counts the hits of a ray set, given in the crate's
+/// double precision and in tinybvh's single-precision layout.
+type Tracer<'a> = (&'static str, Box<dyn Fn(&RaySet, &TinyRays) -> usize + 'a>);
 
 fn main() {
     let mut mesh = ogre();
@@ -39,45 +51,80 @@ fn main() {
         .triangles
         .iter()
         .map(|t| {
-            let [a, b, c] = t.map(|i| single(mesh.positions[i as usize]));
-            Triangle {
-                v0: a,
-                v1: b,
-                v2: c,
-            }
+            let [v0, v1, v2] = t.map(|i| single(mesh.positions[i as usize]));
+            Triangle { v0, v1, v2 }
         })
         .collect();
+    let peer = timed("obvhs slow build", || {
+        build_cwbvh_from_tris(
+            &triangles,
+            BvhBuildParams::slow_build(),
+            &mut Duration::default(),
+        )
+    });
+    let corners: Vec<[f32; 4]> = triangles
+        .iter()
+        .flat_map(|t| [t.v0, t.v1, t.v2].map(|v| v.extend(0.0).to_array()))
+        .collect();
+    let tiny = [
+        ("tinybvh BVH2", Layout::Binary),
+        ("tinybvh BVH4_CPU", Layout::Four),
+        ("tinybvh BVH8_CPU", Layout::Eight),
+    ]
+    .map(|(name, layout)| timed(name, || (name, TinyBvh::build(layout, &corners))));
+    let mut tracers: Vec<Tracer> = vec![
+        (
+            "raycourse fast BVH",
+            Box::new(|set, _| trace_mine(&mesh, set)),
+        ),
+        (
+            "obvhs CWBVH",
+            Box::new(|set, _| trace_peer(&peer, &triangles, set)),
+        ),
+    ];
+    for (name, bvh) in &tiny {
+        match bvh {
+            Some(bvh) => tracers.push((name, Box::new(|_, rays| bvh.trace(rays)))),
+            None => println!("{name}: not in this build (no AVX2)"),
+        }
+    }
+    table(&ray_sets(&mesh), &mut tracers);
+}
+
+/// Runs `build`, printing how long it took.
+fn timed<T>(what: &str, build: impl FnOnce() -> T) -> T {
     let start = Instant::now();
-    let peer = build_cwbvh_from_tris(
-        &triangles,
-        BvhBuildParams::slow_build(),
-        &mut Duration::default(),
-    );
+    let built = build();
+    println!("{what}: {:.2} s", start.elapsed().as_secs_f64());
+    built
+}
+
+/// One row per ray set: each library's Mrays/s, its speed against the crate's, and
+/// the hits each counted.
+fn table(sets: &[(&str, RaySet)], tracers: &mut [Tracer]) {
+    let names: Vec<&str> = tracers.iter().map(|(name, _)| *name).collect();
     println!(
-        "obvhs slow build: {:.2} s; {} triangles",
-        start.elapsed().as_secs_f64(),
-        triangles.len()
+        "| set (rays) | {} Mrays/s | hits |",
+        names.join(" Mrays/s | ")
     );
-    let sets = ray_sets(&mesh);
-    println!(
-        "| set (rays) | raycourse fast BVH, Mrays/s | obvhs CWBVH, Mrays/s | ratio | hits (both) |"
-    );
-    println!("|---|---|---|---|---|");
-    for (name, set) in &sets {
-        let mine = measure(|| trace_mine(&mesh, set));
-        let theirs = measure(|| trace_peer(&peer, &triangles, set));
+    println!("|---|{}---|", "---|".repeat(names.len()));
+    for (name, set) in sets {
         let rays = set.rays.len() as f64 / 1e6;
-        assert_eq!(
-            mine.1, theirs.1,
-            "{name}: the two libraries find different hits"
-        );
+        let tiny = tiny_rays(set);
+        let measured: Vec<(f64, usize)> = tracers
+            .iter()
+            .map(|(_, trace)| measure(|| trace(set, &tiny)))
+            .collect();
+        let speeds: Vec<String> = measured
+            .iter()
+            .map(|(seconds, _)| format!("{:.2} ({:.2}x)", rays / seconds, measured[0].0 / seconds))
+            .collect();
+        let hits: Vec<String> = measured.iter().map(|(_, hits)| hits.to_string()).collect();
         println!(
-            "| {name} ({}) | {:.2} | {:.2} | {:.2}x | {} |",
+            "| {name} ({}) | {} | {} |",
             set.rays.len(),
-            rays / mine.0,
-            rays / theirs.0,
-            theirs.0 / mine.0,
-            mine.1
+            speeds.join(" | "),
+            hits.join(" / ")
         );
     }
 }
@@ -129,6 +176,16 @@ fn trace_peer(peer: &obvhs::cwbvh::CwBvh, triangles: &[Triangle], set: &RaySet) 
             }
         })
         .count()
+}
+
+/// `set` in single precision, as tinybvh takes it (an unbounded ray reaches its
+/// "far", 1e30).
+fn tiny_rays(set: &RaySet) -> TinyRays {
+    let rays = set.rays.iter().zip(&set.t_max).map(|(ray, t_max)| {
+        let (o, d) = (single(ray.origin), single(ray.direction));
+        [o.x, o.y, o.z, d.x, d.y, d.z, to_single(*t_max).min(1e30)]
+    });
+    TinyRays::new(rays, set.kind == RayKind::Occlusion)
 }
 
 fn single(v: Vec3) -> Vec3A {
