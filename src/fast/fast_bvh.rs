@@ -226,10 +226,8 @@ impl Stack {
             self.push(pending(far));
             return Some(pending(near));
         }
-        let mut farthest_first: [usize; WIDTH] = [0, 1, 2, 3];
-        farthest_first.sort_unstable_by(|a, b| entry[*b].total_cmp(&entry[*a]));
         let mut nearest = None;
-        for lane in farthest_first {
+        for lane in farthest_first(entry) {
             if mask & (1 << lane) != 0 {
                 if let Some(farther) = nearest {
                     self.push(farther);
@@ -239,6 +237,19 @@ impl Stack {
         }
         nearest
     }
+}
+
+/// The four lanes ordered by `entry`, farthest first: five compare-and-swaps (a
+/// sorting network), without the branches and calls of a general sort.
+#[inline]
+fn farthest_first(entry: [f32; WIDTH]) -> [usize; WIDTH] {
+    let mut order: [usize; WIDTH] = [0, 1, 2, 3];
+    for (a, b) in [(0, 1), (2, 3), (0, 2), (1, 3), (1, 2)] {
+        if entry[order[a]] < entry[order[b]] {
+            order.swap(a, b);
+        }
+    }
+    order
 }
 
 impl FastBvh {
@@ -297,28 +308,39 @@ impl FastBvh {
         }
     }
 
-    /// The triangle slots of a leaf that the ray may meet: those the single-precision
-    /// pre-test keeps ([`TriangleGroup::candidates`]) when there is a pre-test ray,
-    /// every slot otherwise.
-    fn candidates<'a>(
-        &'a self,
-        leaf: Pending,
-        ray: Option<&'a GroupRay>,
-    ) -> impl Iterator<Item = usize> + 'a {
+    /// The triangle groups of a leaf: group `g` holds slots `4 g` to `4 g + 3`.
+    #[inline]
+    fn groups_of(leaf: Pending) -> std::ops::Range<usize> {
         let first = leaf.child as usize;
-        let groups = (leaf.count as usize).div_ceil(GROUP);
-        (first..first + groups).flat_map(move |g| {
-            let mut mask = lanes(leaf.count as usize - (g - first) * GROUP);
-            if let Some(ray) = ray {
-                mask &= self.groups[g].candidates(ray);
-            }
-            std::iter::from_fn(move || {
-                (mask != 0).then(|| {
-                    let lane = mask.trailing_zeros() as usize;
-                    mask &= mask - 1;
-                    GROUP * g + lane
-                })
-            })
+        first..first + (leaf.count as usize).div_ceil(GROUP)
+    }
+
+    /// The lanes of group `g` of `leaf` whose triangle the ray may meet (bit `i` for
+    /// slot `4 g + i`): those the single-precision pre-test keeps
+    /// ([`TriangleGroup::candidates`]) when there is a pre-test ray, every filled
+    /// lane otherwise.
+    #[inline]
+    fn candidates(&self, leaf: Pending, g: usize, ray: Option<&GroupRay>) -> u32 {
+        let filled = lanes(leaf.count as usize - (g - leaf.child as usize) * GROUP);
+        match ray {
+            Some(ray) => filled & self.groups[g].candidates(ray),
+            None => filled,
+        }
+    }
+}
+
+/// The set bits of a mask, lowest first.
+struct Bits(u32);
+
+impl Iterator for Bits {
+    type Item = usize;
+
+    #[inline]
+    fn next(&mut self) -> Option<usize> {
+        (self.0 != 0).then(|| {
+            let bit = self.0.trailing_zeros() as usize;
+            self.0 &= self.0 - 1;
+            bit
         })
     }
 }
@@ -358,14 +380,16 @@ impl Search for FastBvh {
                 continue;
             }
             let (sheared, group_ray) = leaf_rays.get(mesh, ray);
-            for slot in self.candidates(pending, group_ray) {
-                let triangle = self.ids[slot];
-                if let Some(at) = mesh.hit_triangle(ray, sheared, triangle, triangle_limit)
-                    && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
-                {
-                    best = Some(MeshHit { triangle, at });
-                    box_limit = Limit::new(at.t);
-                    triangle_limit = at.t.next_up();
+            for g in FastBvh::groups_of(pending) {
+                for lane in Bits(self.candidates(pending, g, group_ray)) {
+                    let triangle = self.ids[GROUP * g + lane];
+                    if let Some(at) = mesh.hit_triangle(ray, sheared, triangle, triangle_limit)
+                        && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
+                    {
+                        best = Some(MeshHit { triangle, at });
+                        box_limit = Limit::new(at.t);
+                        triangle_limit = at.t.next_up();
+                    }
                 }
             }
         }
@@ -400,12 +424,13 @@ impl Search for FastBvh {
                 }
             } else {
                 let (sheared, group_ray) = leaf_rays.get(mesh, ray);
-                let mut slots = self.candidates(pending, group_ray);
-                if slots.any(|slot| {
-                    mesh.hit_triangle(ray, sheared, self.ids[slot], t_max)
-                        .is_some()
-                }) {
-                    return true;
+                for g in FastBvh::groups_of(pending) {
+                    for lane in Bits(self.candidates(pending, g, group_ray)) {
+                        let triangle = self.ids[GROUP * g + lane];
+                        if mesh.hit_triangle(ray, sheared, triangle, t_max).is_some() {
+                            return true;
+                        }
+                    }
                 }
             }
         }
