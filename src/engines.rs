@@ -3,10 +3,10 @@
 //! unless its settings ask for more. A sampler or adaptive sampling (`[render]
 //! sampler`, `noise`) takes the samplers' pixel loop ([`samplers::pixel`]). The fast
 //! engine (`[render] fast = true`, `--fast`) gives the course's bytes in less time:
-//! it follows four paths at a time where every object is a diffuse sphere
-//! ([`paths_at_once`]), a mesh's hierarchy is its own when the scene file is read
-//! (`scene_file/session6.rs`), and any other scene takes the course's code (or the
-//! samplers').
+//! it follows four paths at a time where every object is diffuse (spheres, and
+//! meshes, which always are; [`paths_at_once`]), a mesh's hierarchy is its own when
+//! the scene file is read (`scene_file/session6.rs`), and any other scene takes the
+//! course's code (or the samplers').
 
 use crate::Render;
 use crate::fast::paths_at_once;

@@ -19,6 +19,7 @@ pub fn nearer_mesh(scene: &Scene, ray: &Ray, sphere: Option<(Real, usize)>) -> O
     scene.nearest_mesh(ray, sphere.map_or(Real::INFINITY, |(t, _)| t))
 }
 
+// ANCHOR: in_the_way
 /// Whether a mesh lies on the shadow ray of `direct` before the light that its
 /// nearest sphere, `sphere`, lets through: a triangle closer than the point light,
 /// or than the sphere light's body where that body is the nearest sphere. It is
@@ -36,3 +37,4 @@ pub fn in_the_way(scene: &Scene, direct: &Direct, sphere: Option<(Real, usize)>)
     };
     scene.meshes.iter().any(|mesh| mesh.occluded(ray, limit))
 }
+// ANCHOR_END: in_the_way
