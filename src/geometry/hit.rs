@@ -53,8 +53,8 @@ impl Hit {
 // ANCHOR: offset_along
 /// The offset of a new ray's origin from a hit point whose coordinates are within
 /// `error` of the surface with unit normal `normal`: along the normal by
-/// `d = |N| . error`, the largest distance from the surface that the error box
-/// reaches (pbrt-v4, section 6.8.6).
+/// `|N| . error`, the largest distance from the surface that the error box reaches
+/// (pbrt-v4, section 6.8.6).
 pub fn offset_along(normal: Vec3, error: Vec3) -> Vec3 {
     normal.abs().dot(error) * normal
 }
