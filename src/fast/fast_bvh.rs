@@ -99,11 +99,17 @@ struct WideRay {
 impl WideRay {
     /// `ray`, whose inverse direction is `inv_direction`, for the box tests.
     fn new(ray: &Ray, inv_direction: Vec3) -> WideRay {
-        let splat = |f: fn(Real) -> f32| [0, 1, 2].map(|axis| Vec4::splat(f(ray.origin[axis])));
+        let splat = |f: fn(Real) -> f32, v: Vec3| {
+            [
+                Vec4::splat(f(v.x)),
+                Vec4::splat(f(v.y)),
+                Vec4::splat(f(v.z)),
+            ]
+        };
         WideRay {
-            above: splat(round_up),
-            below: splat(round_down),
-            inv_direction: [0, 1, 2].map(|axis| Vec4::splat(to_single(inv_direction[axis]))),
+            above: splat(round_up, ray.origin),
+            below: splat(round_down, ray.origin),
+            inv_direction: splat(to_single, inv_direction),
         }
     }
 

@@ -43,12 +43,16 @@ pub struct GroupRay {
 impl GroupRay {
     /// The single-precision copy of `sheared`.
     pub fn new(sheared: &ShearedRay) -> GroupRay {
-        let origin = sheared.origin.to_array().map(to_single);
+        let [x, y, z] = [sheared.origin.x, sheared.origin.y, sheared.origin.z];
+        let (x, y, z) = (to_single(x), to_single(y), to_single(z));
         GroupRay {
-            origin: origin.map(Vec4::splat),
+            origin: [Vec4::splat(x), Vec4::splat(y), Vec4::splat(z)],
             axes: sheared.axes,
-            shear: [sheared.shear.x, sheared.shear.y].map(|s| Vec4::splat(to_single(s))),
-            reach: Vec4::splat(origin.map(f32::abs).into_iter().fold(0.0, f32::max)),
+            shear: [
+                Vec4::splat(to_single(sheared.shear.x)),
+                Vec4::splat(to_single(sheared.shear.y)),
+            ],
+            reach: Vec4::splat(x.abs().max(y.abs()).max(z.abs())),
             toward: Vec4::splat(to_single(sheared.shear.z).signum()),
         }
     }
@@ -90,11 +94,16 @@ impl TriangleGroup {
     #[inline]
     pub fn candidates(&self, ray: &GroupRay) -> u32 {
         let [kx, ky, kz] = ray.axes;
-        let [a, b, c] = self.corners.map(|p| {
+        let sheared = |p: &[Vec4; 3]| {
             let q = |axis: usize| p[axis] - ray.origin[axis];
             let z = q(kz);
             (q(kx) + ray.shear[0] * z, q(ky) + ray.shear[1] * z, z)
-        });
+        };
+        let (a, b, c) = (
+            sheared(&self.corners[0]),
+            sheared(&self.corners[1]),
+            sheared(&self.corners[2]),
+        );
         let edge = |p: (Vec4, Vec4, Vec4), q: (Vec4, Vec4, Vec4)| p.0 * q.1 - p.1 * q.0;
         let edges = [edge(b, c), edge(c, a), edge(a, b)];
         let size = [a, b, c]
@@ -105,9 +114,10 @@ impl TriangleGroup {
             + coordinate_error * coordinate_error * 2.0
             + size * size * (0.5 * UNIT_ROUNDOFF);
         let margin = edge_error * 2.0;
-        let below = edges.map(|e| e.cmplt(-margin));
-        let above = edges.map(|e| e.cmpgt(margin));
-        let beside = (below[0] | below[1] | below[2]) & (above[0] | above[1] | above[2]);
+        let below = |e: Vec4| e.cmplt(-margin);
+        let above = |e: Vec4| e.cmpgt(margin);
+        let beside = (below(edges[0]) | below(edges[1]) | below(edges[2]))
+            & (above(edges[0]) | above(edges[1]) | above(edges[2]));
 
         let abs_edges = edges[0].abs() + edges[1].abs() + edges[2].abs();
         let determinant = edges[0] + edges[1] + edges[2];
