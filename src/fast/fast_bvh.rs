@@ -11,7 +11,7 @@ use glam::Vec4;
 use crate::acceleration::Bvh;
 use crate::fast::sah;
 use crate::fast::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
-use crate::geometry::{Aabb, Ray, ShearedRay, TriangleTest};
+use crate::geometry::{Ray, ShearedRay, TriangleTest};
 use crate::maths::{Real, Vec3, to_single};
 use crate::meshes::{Mesh, MeshHit, Search};
 
@@ -51,10 +51,6 @@ impl WideNode {
 /// A bounding volume hierarchy flattened for traversal.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FastBvh {
-    /// The box around the whole mesh, in the mesh's precision: a ray that misses
-    /// it (most rays, in a room where the mesh is small) is turned away by one
-    /// slab test, before anything else is made for it.
-    bounds: Aabb,
     /// The nodes, the root first.
     nodes: Vec<WideNode>,
     /// Each leaf's triangles in groups of four, in single precision, for the
@@ -265,7 +261,6 @@ impl FastBvh {
     pub fn build(mesh: &Mesh, max_leaf: u16) -> FastBvh {
         let bvh = sah::build(mesh, max_leaf.into(), GROUP);
         let mut fast = FastBvh {
-            bounds: bvh.nodes.first().map_or(Aabb::EMPTY, |root| root.bounds),
             nodes: vec![],
             groups: vec![],
             ids: Vec::with_capacity(mesh.triangles.len()),
@@ -359,13 +354,15 @@ impl Search for FastBvh {
     // ANCHOR: fast_traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`: the same
     /// hit as the course's [`Bvh`] (equal distances go to the lower triangle index).
-    /// Of the children a ray enters, the nearest is visited next and the others wait
-    /// on the stack, nearer ones on top; a child is skipped when popped if a hit
-    /// found meanwhile is closer than its box. In a leaf, only the triangles the
-    /// pre-test keeps get the exact test.
+    /// A ray that misses the mesh's box (most rays, in a room where the mesh is small)
+    /// is turned away by that one slab test, as the course's bounding box does, before
+    /// anything else is made for it. Of the children a ray enters, the nearest is
+    /// visited next and the others wait on the stack, nearer ones on top; a child is
+    /// skipped when popped if a hit found meanwhile is closer than its box. In a leaf,
+    /// only the triangles the pre-test keeps get the exact test.
     fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
         let inv_direction = ray.direction.recip();
-        self.bounds.entry(ray, inv_direction, t_max)?;
+        mesh.bounds.entry(ray, inv_direction, t_max)?;
         let wide = WideRay::new(ray, inv_direction);
         let mut leaf_rays = LeafRays::default();
         let mut best: Option<MeshHit> = None;
@@ -407,7 +404,7 @@ impl Search for FastBvh {
     /// the first one found.
     fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let inv_direction = ray.direction.recip();
-        if self.bounds.entry(ray, inv_direction, t_max).is_none() {
+        if mesh.bounds.entry(ray, inv_direction, t_max).is_none() {
             return false;
         }
         let wide = WideRay::new(ray, inv_direction);
@@ -418,10 +415,8 @@ impl Search for FastBvh {
         while let Some(pending) = stack.pop() {
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
-                let (mut mask, _) = wide.enters(node, limit);
-                while mask != 0 {
-                    let lane = mask.trailing_zeros() as usize;
-                    mask &= mask - 1;
+                let (mask, _) = wide.enters(node, limit);
+                for lane in Bits(mask) {
                     stack.push(Pending {
                         child: node.child[lane],
                         count: node.count[lane],

@@ -43,8 +43,8 @@ pub struct GroupRay {
 impl GroupRay {
     /// The single-precision copy of `sheared`.
     pub fn new(sheared: &ShearedRay) -> GroupRay {
-        let [x, y, z] = [sheared.origin.x, sheared.origin.y, sheared.origin.z];
-        let (x, y, z) = (to_single(x), to_single(y), to_single(z));
+        let o = sheared.origin;
+        let (x, y, z) = (to_single(o.x), to_single(o.y), to_single(o.z));
         GroupRay {
             origin: [Vec4::splat(x), Vec4::splat(y), Vec4::splat(z)],
             axes: sheared.axes,
