@@ -79,26 +79,11 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
             }
             verdicts.insert(exercise.id, verdict);
         }
-        let mut shown: Vec<&str> = vec![];
-        for stage in stages().filter(|s| s.session == session) {
-            shown.push(stage.name);
-            let name = images::check_name(stage);
-            if chosen(&name) {
-                let verdict = caught(|| images::check(stage));
-                report(&name, &verdict, None, &markers, &verdicts);
-                if verdict == Verdict::Passed {
-                    passed += 1
-                } else {
-                    failed += 1;
-                    let used = used_by(exercises, &shown);
-                    if let Some(look) = look_again(&verdict, &verdicts, &used, &markers) {
-                        println!("    {look}");
-                        if session == current && stage_next.is_none() {
-                            stage_next = Some(format!("the stage `{}`: {look}", stage.name));
-                        }
-                    }
-                }
-            }
+        let (stages_passed, stages_failed, differing) =
+            check_stages(session, exercises, &chosen, &markers, &verdicts);
+        (passed, failed) = (passed + stages_passed, failed + stages_failed);
+        if session == current {
+            stage_next = stage_next.or(differing);
         }
     }
     let unmarked = unmarked(sessions, &markers);
@@ -118,6 +103,41 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     } else {
         ExitCode::from(101)
     }
+}
+
+/// Renders each stage of `session` that `chosen` keeps and compares it with its
+/// reference, printing its line: how many passed and failed, and the first that
+/// differs although every exercise so far passes (what to do next), with the
+/// exercises of the session, `exercises`, that its image relies on.
+fn check_stages(
+    session: u32,
+    exercises: &[Exercise],
+    chosen: &dyn Fn(&str) -> bool,
+    markers: &HashMap<String, Marker>,
+    verdicts: &HashMap<&str, Verdict>,
+) -> (u32, u32, Option<String>) {
+    let (mut passed, mut failed, mut differing) = (0, 0, None);
+    let mut shown: Vec<&str> = vec![];
+    for stage in stages().filter(|s| s.session == session) {
+        shown.push(stage.name);
+        let name = images::check_name(stage);
+        if !chosen(&name) {
+            continue;
+        }
+        let verdict = caught(|| images::check(stage));
+        report(&name, &verdict, None, markers, verdicts);
+        if verdict == Verdict::Passed {
+            passed += 1;
+            continue;
+        }
+        failed += 1;
+        let used = used_by(exercises, &shown);
+        if let Some(look) = look_again(&verdict, verdicts, &used, markers) {
+            println!("    {look}");
+            differing = differing.or(Some(format!("the stage `{}`: {look}", stage.name)));
+        }
+    }
+    (passed, failed, differing)
 }
 
 /// The exercises of `exercises` whose stage is one of `shown` (the session's stages
