@@ -1,51 +1,42 @@
-//! The hierarchy laid out for speed: the SAH tree collapsed to four children per
-//! node, whose four boxes a ray tests at once on the four lanes of a SIMD register,
-//! and each leaf's triangles stored in groups of four that a single-precision
-//! pre-test ([`TriangleGroup`]) also tests at once, leaving the exact test only the
+//! The hierarchy laid out for speed: the SAH tree collapsed to eight children per
+//! node, whose eight boxes a ray tests at once ([`WideNode`]), and each leaf's
+//! triangles stored in groups of four that a single-precision pre-test
+//! ([`TriangleGroup`]) also tests at once, leaving the exact test only the
 //! triangles the ray may meet. It finds exactly the hits the course's traversal
 //! finds; only the number of steps and the memory traffic shrink.
 
-use arrayvec::ArrayVec;
-use glam::Vec4;
-
 use crate::acceleration::Bvh;
+#[cfg(target_arch = "x86_64")]
+use crate::fast::avx_boxes::AvxBoxes;
 use crate::fast::sah;
+use crate::fast::traversal_stack::{Bits, Pending, Stack};
 use crate::fast::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
+use crate::fast::wide_node::{
+    Limit, NodeTest, Portable, WIDTH, WideNode, WideRay, round_down, round_up,
+};
 use crate::geometry::{Ray, ShearedRay, TriangleTest};
-use crate::maths::{Real, Vec3, to_single};
+use crate::maths::{Real, Vec3};
 use crate::meshes::{Mesh, MeshHit, Search};
 
-/// Children per node: one per lane of a 128-bit SIMD register.
-const WIDTH: usize = 4;
-
-/// Pending children the traversal keeps in a fixed array; more spill to the heap.
-const STACK: usize = 24;
-
-/// One node: the boxes of its four children, one child per lane, and where each
-/// child's node or triangles are. Two cache lines.
+/// How the boxes of a node are tested.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[repr(C, align(64))]
-pub struct WideNode {
-    /// The children's boxes by plane: lowest x, y, z, then highest x, y, z; lane `i`
-    /// is child `i`. Single precision, rounded outwards so that each box still holds
-    /// everything below it. An empty slot's box is the point at infinity on all
-    /// three axes, which no ray reaches: along each axis its two planes are crossed
-    /// at the same infinite distance, beyond any exit if the ray goes that way, before
-    /// any entry if it goes the other.
-    planes: [[f32; WIDTH]; 6],
-    /// For an inner child, its node's index; for a leaf, its first triangle group.
-    child: [u32; WIDTH],
-    /// How many triangles a leaf child holds; 0 for an inner child.
-    count: [u32; WIDTH],
+pub enum BoxLanes {
+    /// Eight at once in AVX instructions, on a processor that has them.
+    #[cfg(target_arch = "x86_64")]
+    Avx(AvxBoxes),
+    /// As two halves of four, on any processor.
+    Portable,
 }
 
-impl WideNode {
-    /// A node with four empty slots.
-    const EMPTY: WideNode = WideNode {
-        planes: [[f32::INFINITY; WIDTH]; 6],
-        child: [0; WIDTH],
-        count: [0; WIDTH],
-    };
+impl BoxLanes {
+    /// The fastest this processor has.
+    pub fn fastest() -> BoxLanes {
+        #[cfg(target_arch = "x86_64")]
+        if let Some(avx) = AvxBoxes::detect() {
+            return BoxLanes::Avx(avx);
+        }
+        BoxLanes::Portable
+    }
 }
 
 /// A bounding volume hierarchy flattened for traversal.
@@ -59,211 +50,22 @@ pub struct FastBvh {
     /// The mesh's index of the triangle in every slot, for the exact test on the
     /// mesh's own corners. A leaf's last group is padded with its last triangle.
     ids: Vec<u32>,
-}
-
-/// `x` rounded to single precision, downwards, then one float further: the margin
-/// absorbs the rounding of the box test's own subtraction.
-fn round_down(x: Real) -> f32 {
-    let f = to_single(x);
-    let f = if (f as Real) > x { f.next_down() } else { f };
-    f.next_down()
-}
-
-/// `x` rounded to single precision, upwards, then one float further.
-fn round_up(x: Real) -> f32 {
-    let f = to_single(x);
-    let f = if (f as Real) < x { f.next_up() } else { f };
-    f.next_up()
-}
-
-/// A ray in single precision, for the box tests, each value splatted over four
-/// lanes. Its origin is kept twice, rounded up and rounded down, both strictly
-/// beyond the true origin: a lowest plane is measured from the origin above it and a
-/// highest plane from the one below, so whichever way the ray goes, every computed
-/// slab is at least as wide as the true one. Being strictly beyond also means that
-/// `0 x inf` (a ray parallel to a face, with an infinite inverse direction) occurs
-/// only for a ray outside that slab, where either answer is safe.
-struct WideRay {
-    /// Per axis, the origin rounded up, for the lowest planes.
-    above: [Vec4; 3],
-    /// Per axis, the origin rounded down, for the highest planes.
-    below: [Vec4; 3],
-    /// Per axis, `1 / direction`.
-    inv_direction: [Vec4; 3],
-}
-
-impl WideRay {
-    /// `ray`, whose inverse direction is `inv_direction`, for the box tests.
-    fn new(ray: &Ray, inv_direction: Vec3) -> WideRay {
-        let splat = |f: fn(Real) -> f32, v: Vec3| {
-            [
-                Vec4::splat(f(v.x)),
-                Vec4::splat(f(v.y)),
-                Vec4::splat(f(v.z)),
-            ]
-        };
-        WideRay {
-            above: splat(round_up, ray.origin),
-            below: splat(round_down, ray.origin),
-            inv_direction: splat(to_single, inv_direction),
-        }
-    }
-
-    // ANCHOR: wide_slab
-    /// Which of `node`'s four boxes the ray enters before `limit` (bit `i` for
-    /// child `i`), and the distances at which it enters them: the slab test of
-    /// [`Aabb::entry`] on four boxes at once. Per axis the ray crosses the lowest
-    /// and the highest plane; the nearer crossing is where it enters the slab,
-    /// whichever way it goes. Each distance carries at most three roundings, so the
-    /// exit is widened by `1 + 2 delta_3`; `limit` is finite and already widened.
-    #[inline(always)]
-    fn enters(&self, node: &WideNode, limit: Limit) -> (u32, Vec4) {
-        let mut entry = Vec4::ZERO;
-        let mut exit = Vec4::INFINITY;
-        for axis in 0..3 {
-            let inv_direction = self.inv_direction[axis];
-            let lowest = (Vec4::from_array(node.planes[axis]) - self.above[axis]) * inv_direction;
-            let highest =
-                (Vec4::from_array(node.planes[axis + 3]) - self.below[axis]) * inv_direction;
-            entry = entry.max(lowest.min(highest));
-            exit = exit.min(lowest.max(highest));
-        }
-        let exit = (exit * WIDENING).min(Vec4::splat(limit.0));
-        (entry.cmple(exit).bitmask(), entry)
-    }
-    // ANCHOR_END: wide_slab
-}
-
-/// `1 + 2 delta_3` in single precision, rounded up.
-const WIDENING: f32 = 1.0 + 8.0 * f32::EPSILON;
-
-/// How far the box tests look: a distance rounded up to single precision and
-/// widened like a box's exit, capped at the largest finite float so that no box is
-/// entered at an infinite distance (the empty slots).
-#[derive(Clone, Copy)]
-struct Limit(f32);
-
-impl Limit {
-    fn new(t: Real) -> Limit {
-        Limit((round_up(t) * WIDENING).min(f32::MAX))
-    }
-}
-
-/// A child waiting on the traversal stack: a node, or a leaf's triangles, and the
-/// distance at which the ray enters its box.
-#[derive(Clone, Copy)]
-struct Pending {
-    child: u32,
-    count: u32,
-    entry: f32,
-}
-
-/// The root, entered from the ray's start.
-const ROOT: Pending = Pending {
-    child: 0,
-    count: 0,
-    entry: 0.0,
-};
-
-/// The children waiting to be visited, the next on top.
-struct Stack {
-    /// The first `STACK` entries, in place (nothing to allocate or clear per ray).
-    entries: ArrayVec<Pending, STACK>,
-    /// Entries beyond the first `STACK`, for deep trees.
-    spilled: Vec<Pending>,
-}
-
-impl Stack {
-    /// An empty stack.
-    #[inline]
-    fn new() -> Stack {
-        Stack {
-            entries: ArrayVec::new(),
-            spilled: Vec::new(),
-        }
-    }
-
-    /// Puts `pending` on top, in the array while it has room.
-    #[inline]
-    fn push(&mut self, pending: Pending) {
-        if let Err(full) = self.entries.try_push(pending) {
-            self.spilled.push(full.element());
-        }
-    }
-
-    /// The entry on top of the array, or a spilled one once the array is empty.
-    /// After a spill the order is no longer strictly last-in first-out, which costs
-    /// at most some culling, never a hit: every pending child is still visited.
-    #[inline]
-    fn pop(&mut self) -> Option<Pending> {
-        self.entries.pop().or_else(|| self.spilled.pop())
-    }
-
-    /// Of the children of `node` whose bit is set in `mask`, returns the nearest,
-    /// to be visited next, and pushes the others, the nearer ones last so that they
-    /// are popped first.
-    #[inline]
-    fn push_all_but_nearest(&mut self, node: &WideNode, mask: u32, entry: Vec4) -> Option<Pending> {
-        let entry = entry.to_array();
-        let pending = |lane: usize| Pending {
-            child: node.child[lane],
-            count: node.count[lane],
-            entry: entry[lane],
-        };
-        if mask == 0 {
-            return None;
-        }
-        let first = mask.trailing_zeros() as usize;
-        let rest = mask & (mask - 1);
-        if rest == 0 {
-            return Some(pending(first));
-        }
-        let second = rest.trailing_zeros() as usize;
-        if rest & (rest - 1) == 0 {
-            let (near, far) = if entry[first] <= entry[second] {
-                (first, second)
-            } else {
-                (second, first)
-            };
-            self.push(pending(far));
-            return Some(pending(near));
-        }
-        let mut nearest = None;
-        for lane in farthest_first(entry) {
-            if mask & (1 << lane) != 0 {
-                if let Some(farther) = nearest {
-                    self.push(farther);
-                }
-                nearest = Some(pending(lane));
-            }
-        }
-        nearest
-    }
-}
-
-/// The four lanes ordered by `entry`, farthest first: five compare-and-swaps (a
-/// sorting network), without the branches and calls of a general sort.
-#[inline]
-fn farthest_first(entry: [f32; WIDTH]) -> [usize; WIDTH] {
-    let mut order: [usize; WIDTH] = [0, 1, 2, 3];
-    for (a, b) in [(0, 1), (2, 3), (0, 2), (1, 3), (1, 2)] {
-        if entry[order[a]] < entry[order[b]] {
-            order.swap(a, b);
-        }
-    }
-    order
+    /// How the traversal tests a node's boxes.
+    box_lanes: BoxLanes,
 }
 
 impl FastBvh {
     /// The hierarchy of `mesh` built with the surface area heuristic
     /// ([`sah::build`]), leaves of at most `max_leaf` triangles, collapsed to
-    /// four children per node.
+    /// eight children per node, its boxes tested in the fastest lanes this
+    /// processor has.
     pub fn build(mesh: &Mesh, max_leaf: u16) -> FastBvh {
         let bvh = sah::build(mesh, max_leaf.into(), GROUP);
         let mut fast = FastBvh {
             nodes: vec![],
             groups: vec![],
             ids: Vec::with_capacity(mesh.triangles.len()),
+            box_lanes: BoxLanes::fastest(),
         };
         fast.nodes.push(WideNode::EMPTY);
         if mesh.triangles.is_empty() {
@@ -295,6 +97,12 @@ impl FastBvh {
             }
         }
         fast
+    }
+
+    /// The same hierarchy with its boxes tested in `box_lanes`: to compare them,
+    /// or to test the portable lanes on a processor that has faster ones.
+    pub fn with_box_lanes(self, box_lanes: BoxLanes) -> FastBvh {
+        FastBvh { box_lanes, ..self }
     }
 
     /// Appends a leaf's triangles: their groups, and their indices padded to whole
@@ -330,37 +138,47 @@ impl FastBvh {
     }
 }
 
-/// The set bits of a mask, lowest first.
-struct Bits(u32);
-
-impl Iterator for Bits {
-    type Item = usize;
-
-    #[inline]
-    fn next(&mut self) -> Option<usize> {
-        (self.0 != 0).then(|| {
-            let bit = self.0.trailing_zeros() as usize;
-            self.0 &= self.0 - 1;
-            bit
-        })
-    }
-}
-
 impl Search for FastBvh {
     fn name(&self) -> &'static str {
         "fast"
     }
 
+    fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
+        match self.box_lanes {
+            #[cfg(target_arch = "x86_64")]
+            BoxLanes::Avx(avx) => avx.run(|avx| self.nearest_with(avx, mesh, ray, t_max)),
+            BoxLanes::Portable => self.nearest_with(Portable, mesh, ray, t_max),
+        }
+    }
+
+    fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
+        match self.box_lanes {
+            #[cfg(target_arch = "x86_64")]
+            BoxLanes::Avx(avx) => avx.run(|avx| self.occluded_with(avx, mesh, ray, t_max)),
+            BoxLanes::Portable => self.occluded_with(Portable, mesh, ray, t_max),
+        }
+    }
+}
+
+impl FastBvh {
     // ANCHOR: fast_traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`: the same
-    /// hit as the course's [`Bvh`] (equal distances go to the lower triangle index).
-    /// A ray that misses the mesh's box (most rays, in a room where the mesh is small)
-    /// is turned away by that one slab test, as the course's bounding box does, before
-    /// anything else is made for it. Of the children a ray enters, the nearest is
-    /// visited next and the others wait on the stack, nearer ones on top; a child is
-    /// skipped when popped if a hit found meanwhile is closer than its box. In a leaf,
-    /// only the triangles the pre-test keeps get the exact test.
-    fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
+    /// hit as the course's [`Bvh`] (equal distances go to the lower triangle index),
+    /// with each node's boxes tested by `boxes`. A ray that misses the mesh's box
+    /// (most rays, in a room where the mesh is small) is turned away by that one slab
+    /// test, as the course's bounding box does, before anything else is made for it.
+    /// Of the children a ray enters, the nearest is visited next and the others wait
+    /// on the stack, nearer ones on top; a child is skipped when popped if a hit
+    /// found meanwhile is closer than its box. In a leaf, only the triangles the
+    /// pre-test keeps get the exact test.
+    #[inline(always)]
+    fn nearest_with(
+        &self,
+        boxes: impl NodeTest,
+        mesh: &Mesh,
+        ray: &Ray,
+        t_max: Real,
+    ) -> Option<MeshHit> {
         let inv_direction = ray.direction.recip();
         mesh.bounds.entry(ray, inv_direction, t_max)?;
         let wide = WideRay::new(ray, inv_direction);
@@ -370,15 +188,15 @@ impl Search for FastBvh {
         // distance through, for the lower index to win).
         let mut box_limit = Limit::new(t_max);
         let mut triangle_limit = t_max;
-        let mut stack = Stack::new();
-        let mut next = Some(ROOT);
+        let mut stack = Stack::default();
+        let mut next = Some(Pending::ROOT);
         while let Some(pending) = next.take().or_else(|| stack.pop()) {
             if pending.entry > box_limit.0 {
                 continue;
             }
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
-                let (mask, entry) = wide.enters(node, box_limit);
+                let (mask, entry) = boxes.enters(&wide, node, box_limit);
                 next = stack.push_all_but_nearest(node, mask, entry);
                 continue;
             }
@@ -401,8 +219,9 @@ impl Search for FastBvh {
     // ANCHOR_END: fast_traverse
 
     /// Whether `ray` meets any triangle of `mesh` closer than `t_max`, stopping at
-    /// the first one found.
-    fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
+    /// the first one found; each node's boxes tested by `boxes`.
+    #[inline(always)]
+    fn occluded_with(&self, boxes: impl NodeTest, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let inv_direction = ray.direction.recip();
         if mesh.bounds.entry(ray, inv_direction, t_max).is_none() {
             return false;
@@ -410,27 +229,21 @@ impl Search for FastBvh {
         let wide = WideRay::new(ray, inv_direction);
         let mut leaf_rays = LeafRays::default();
         let limit = Limit::new(t_max);
-        let mut stack = Stack::new();
-        stack.push(ROOT);
+        let mut stack = Stack::default();
+        stack.push(Pending::ROOT);
         while let Some(pending) = stack.pop() {
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
-                let (mask, _) = wide.enters(node, limit);
-                for lane in Bits(mask) {
-                    stack.push(Pending {
-                        child: node.child[lane],
-                        count: node.count[lane],
-                        entry: 0.0,
-                    });
-                }
-            } else {
-                let (sheared, group_ray) = leaf_rays.get(mesh, ray);
-                for g in FastBvh::groups_of(pending) {
-                    for lane in Bits(self.candidates(pending, g, group_ray)) {
-                        let triangle = self.ids[GROUP * g + lane];
-                        if mesh.hit_triangle(ray, sheared, triangle, t_max).is_some() {
-                            return true;
-                        }
+                let (mask, _) = boxes.enters(&wide, node, limit);
+                stack.push_all(node, mask);
+                continue;
+            }
+            let (sheared, group_ray) = leaf_rays.get(mesh, ray);
+            for g in FastBvh::groups_of(pending) {
+                for lane in Bits(self.candidates(pending, g, group_ray)) {
+                    let triangle = self.ids[GROUP * g + lane];
+                    if mesh.hit_triangle(ray, sheared, triangle, t_max).is_some() {
+                        return true;
                     }
                 }
             }
@@ -467,7 +280,7 @@ fn pretest_ray(mesh: &Mesh, sheared: &ShearedRay) -> Option<GroupRay> {
 }
 
 /// The binary nodes `slots` with inner ones replaced by their children, the
-/// largest box first, until there are four: the children of one wide node.
+/// largest box first, until there are eight: the children of one wide node.
 fn opened(bvh: &Bvh, mut slots: Vec<usize>) -> Vec<usize> {
     while slots.len() < WIDTH {
         let inner = slots
@@ -495,8 +308,8 @@ mod tests {
     use super::*;
 
     #[test]
-    fn nodes_are_two_cache_lines_and_boxes_round_outwards() {
-        assert_eq!(std::mem::size_of::<WideNode>(), 128);
+    fn nodes_are_four_cache_lines_and_boxes_round_outwards() {
+        assert_eq!(std::mem::size_of::<WideNode>(), 256);
         for x in [0.1, -0.1, 1e-30, 3.0, -1e20] {
             assert!(
                 round_down(x) as Real <= x && x <= round_up(x) as Real,

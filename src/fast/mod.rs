@@ -12,7 +12,10 @@
 //! | [`direct_at_once`] | 3 | the direct light of four paths, their shadow rays traced together | `direct_light` |
 //! | [`meshes_at_once`] | 5 | the meshes those paths meet, searched after their spheres | `Scene::intersect` |
 //! | [`sah`] | 6 | splits chosen by the surface area heuristic | `Bvh::build` |
-//! | [`fast_bvh`] | 6 | four boxes and four triangles tested at once | `Bvh` |
+//! | [`wide_node`] | 6 | eight boxes tested at once, on any processor | `Aabb::entry` |
+//! | `avx_boxes` | 6 | the same test in AVX instructions, on x86-64 | |
+//! | [`traversal_stack`] | 6 | the children yet to visit, nearest on top | the course's stack |
+//! | [`fast_bvh`] | 6 | the hierarchy of eight-box nodes and four-triangle groups | `Bvh` |
 //! | [`triangle_group`] | 6 | the single-precision pre-test of four triangles | the ray-triangle test |
 
 #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
@@ -23,6 +26,8 @@ pub mod paths_at_once;
 pub mod portable;
 pub mod sphere_lanes;
 
+#[cfg(all(target_arch = "x86_64", feature = "s6"))]
+pub mod avx_boxes;
 #[cfg(feature = "s6")]
 pub mod fast_bvh;
 #[cfg(feature = "s5")]
@@ -30,7 +35,11 @@ pub mod meshes_at_once;
 #[cfg(feature = "s6")]
 pub mod sah;
 #[cfg(feature = "s6")]
+pub mod traversal_stack;
+#[cfg(feature = "s6")]
 pub mod triangle_group;
+#[cfg(feature = "s6")]
+pub mod wide_node;
 
 #[cfg(feature = "s6")]
 pub use fast_bvh::FastBvh;

@@ -124,13 +124,16 @@ fn searches_agree(obj: &str, count: u64) {
         let sah = hits(&mesh, &rays);
         let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "SAH BVH differs from brute force");
-        for leaf in [1, 4, 8, 16] {
-            mesh.search = Arc::new(raycourse::fast::FastBvh::build(&mesh, leaf));
+        use raycourse::fast::fast_bvh::BoxLanes;
+        let lanes = [1, 4, 8, 16].map(|leaf| (leaf, BoxLanes::fastest()));
+        for (leaf, lanes) in lanes.into_iter().chain([(8, BoxLanes::Portable)]) {
+            let fast = raycourse::fast::FastBvh::build(&mesh, leaf).with_box_lanes(lanes);
+            mesh.search = Arc::new(fast);
             let fast = hits(&mesh, &rays);
             let differing = fast.iter().zip(&brute).filter(|(a, b)| a != b).count();
             assert_eq!(
                 differing, 0,
-                "fast BVH (leaves of {leaf}) differs from brute force"
+                "fast BVH (leaves of {leaf}, {lanes:?}) differs from brute force"
             );
             let blocked = rays
                 .iter()

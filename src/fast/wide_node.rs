@@ -1,0 +1,159 @@
+//! One node of the fast hierarchy: the boxes of its eight children, which a ray
+//! tests at once, eight single-precision numbers per operation where the processor
+//! has AVX ([`crate::fast::avx_boxes`]) and as two halves of four on any other.
+
+use glam::Vec4;
+
+use crate::geometry::Ray;
+use crate::maths::{Real, Vec3, to_single};
+
+/// Children per node: one per lane of a 256-bit SIMD register of `f32`.
+pub const WIDTH: usize = 8;
+
+/// One node: the boxes of its eight children, one child per lane, and where each
+/// child's node or triangles are. Four cache lines.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C, align(64))]
+pub struct WideNode {
+    /// The children's boxes by plane: lowest x, y, z, then highest x, y, z; lane `i`
+    /// is child `i`. Single precision, rounded outwards so that each box still holds
+    /// everything below it. An empty slot's box is the point at infinity on all
+    /// three axes, which no ray reaches: along each axis its two planes are crossed
+    /// at the same infinite distance, beyond any exit if the ray goes that way, before
+    /// any entry if it goes the other.
+    pub planes: [[f32; WIDTH]; 6],
+    /// For an inner child, its node's index; for a leaf, its first triangle group.
+    pub child: [u32; WIDTH],
+    /// How many triangles a leaf child holds; 0 for an inner child.
+    pub count: [u32; WIDTH],
+}
+
+impl WideNode {
+    /// A node with eight empty slots.
+    pub const EMPTY: WideNode = WideNode {
+        planes: [[f32::INFINITY; WIDTH]; 6],
+        child: [0; WIDTH],
+        count: [0; WIDTH],
+    };
+}
+
+/// `x` rounded to single precision, downwards, then one float further: the margin
+/// absorbs the rounding of the box test's own subtraction.
+pub fn round_down(x: Real) -> f32 {
+    let f = to_single(x);
+    let f = if (f as Real) > x { f.next_down() } else { f };
+    f.next_down()
+}
+
+/// `x` rounded to single precision, upwards, then one float further.
+pub fn round_up(x: Real) -> f32 {
+    let f = to_single(x);
+    let f = if (f as Real) < x { f.next_up() } else { f };
+    f.next_up()
+}
+
+/// `1 + 2 delta_3` in single precision, rounded up.
+pub const WIDENING: f32 = 1.0 + 8.0 * f32::EPSILON;
+
+/// How far the box tests look: a distance rounded up to single precision and
+/// widened like a box's exit, capped at the largest finite float so that no box is
+/// entered at an infinite distance (the empty slots).
+#[derive(Clone, Copy)]
+pub struct Limit(pub f32);
+
+impl Limit {
+    /// The limit of a search for hits closer than `t`.
+    pub fn new(t: Real) -> Limit {
+        Limit((round_up(t) * WIDENING).min(f32::MAX))
+    }
+}
+
+/// A ray in single precision, for the box tests, with each axis's planes chosen by
+/// the sign of its direction. Going up an axis, a ray enters a slab at its lowest
+/// plane and leaves at its highest; going down, the other way round. The origin is
+/// rounded up for the lowest planes and down for the highest, both strictly beyond
+/// the true origin, so that every computed slab is at least as wide as the true one.
+/// Being strictly beyond also means that `0 x inf` (a ray parallel to a face, with
+/// an infinite inverse direction) occurs only for a ray outside that slab, where
+/// either answer is safe.
+pub struct WideRay {
+    /// Per axis, the plane (`0` to `5`, as in [`WideNode::planes`]) where the ray
+    /// enters the slab.
+    pub near: [usize; 3],
+    /// Per axis, the plane where it leaves.
+    pub far: [usize; 3],
+    /// Per axis, the origin as the near plane is measured from.
+    pub near_origin: [f32; 3],
+    /// Per axis, the origin as the far plane is measured from.
+    pub far_origin: [f32; 3],
+    /// Per axis, `1 / direction`.
+    pub inv_direction: [f32; 3],
+}
+
+impl WideRay {
+    /// `ray`, whose inverse direction is `inv_direction`, for the box tests.
+    #[inline]
+    pub fn new(ray: &Ray, inv_direction: Vec3) -> WideRay {
+        let inv_direction = inv_direction.to_array().map(to_single);
+        let (above, below) = (
+            ray.origin.to_array().map(round_up),
+            ray.origin.to_array().map(round_down),
+        );
+        let up = |axis: usize| inv_direction[axis].is_sign_positive();
+        let pick = |axis: usize, if_up: (usize, f32), if_down: (usize, f32)| {
+            if up(axis) { if_up } else { if_down }
+        };
+        let near = [0, 1, 2].map(|a| pick(a, (a, above[a]), (a + 3, below[a])));
+        let far = [0, 1, 2].map(|a| pick(a, (a + 3, below[a]), (a, above[a])));
+        WideRay {
+            near: near.map(|(plane, _)| plane),
+            far: far.map(|(plane, _)| plane),
+            near_origin: near.map(|(_, origin)| origin),
+            far_origin: far.map(|(_, origin)| origin),
+            inv_direction,
+        }
+    }
+}
+
+/// The slab test of a node's eight boxes, one implementation per kind of lanes.
+pub trait NodeTest: Copy {
+    /// Which of `node`'s boxes `ray` enters before `limit` (bit `i` for child `i`),
+    /// and the distances at which it enters them.
+    fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]);
+}
+
+/// The slab test on any processor: the eight boxes as two halves of four lanes.
+#[derive(Clone, Copy, Debug)]
+pub struct Portable;
+
+impl NodeTest for Portable {
+    // ANCHOR: wide_slab
+    /// The slab test of [`Aabb::entry`](crate::geometry::Aabb::entry) on four
+    /// boxes at once, twice. Per axis the ray enters the slab at its near plane and
+    /// leaves at its far one; the box is entered at the farthest entry (and not
+    /// before the ray's start) and left at the nearest exit. Each distance carries
+    /// at most three roundings, so the exit is widened by `1 + 2 delta_3`; `limit`
+    /// is finite and already widened.
+    #[inline(always)]
+    fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
+        let mut mask = 0;
+        let mut entries = [0.0; WIDTH];
+        for half in [0, 4] {
+            let planes = |plane: usize| Vec4::from_slice(&node.planes[plane][half..]);
+            let mut entry = Vec4::ZERO;
+            let mut exit = Vec4::INFINITY;
+            for axis in 0..3 {
+                let inv_direction = Vec4::splat(ray.inv_direction[axis]);
+                let near = (planes(ray.near[axis]) - ray.near_origin[axis]) * inv_direction;
+                let far = (planes(ray.far[axis]) - ray.far_origin[axis]) * inv_direction;
+                entry = entry.max(near);
+                exit = exit.min(far);
+            }
+            let exit = (exit * WIDENING).min(Vec4::splat(limit.0));
+            mask |= entry.cmple(exit).bitmask() << half;
+            entry.write_to_slice(&mut entries[half..]);
+        }
+        (mask, entries)
+    }
+    // ANCHOR_END: wide_slab
+}
