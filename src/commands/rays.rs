@@ -9,7 +9,7 @@ use std::time::Instant;
 use clap::{ArgMatches, FromArgMatches, Parser, ValueEnum};
 use raycourse::acceleration::Bvh;
 use raycourse::fast::FastBvh;
-use raycourse::fast::fast_bvh::BoxLanes;
+use raycourse::fast::fast_bvh::TestLanes;
 use raycourse::maths::{Mat3, Vec3};
 use raycourse::meshes::{Mesh, Placement, Search, read_obj};
 use raycourse::studies::rayset::{RayKind, RaySet, Timing, time_set};
@@ -105,7 +105,7 @@ fn load(path: &Path, bvh: BvhKind, leaf: u16) -> Result<Mesh, Failure> {
         BvhKind::Sah => Arc::new(raycourse::fast::sah::build(&mesh, leaf.into(), 1)),
         BvhKind::Fast => Arc::new(FastBvh::build(&mesh, leaf)),
         BvhKind::FastPortable => {
-            Arc::new(FastBvh::build(&mesh, leaf).with_box_lanes(BoxLanes::Portable))
+            Arc::new(FastBvh::build(&mesh, leaf).with_lanes(TestLanes::Portable))
         }
     };
     println!(

@@ -1,41 +1,41 @@
 //! The hierarchy laid out for speed: the SAH tree collapsed to eight children per
 //! node, whose eight boxes a ray tests at once ([`WideNode`]), and each leaf's
-//! triangles stored in groups of four that a single-precision pre-test
+//! triangles stored in groups of eight that a single-precision pre-test
 //! ([`TriangleGroup`]) also tests at once, leaving the exact test only the
 //! triangles the ray may meet. It finds exactly the hits the course's traversal
 //! finds; only the number of steps and the memory traffic shrink.
 
 use crate::acceleration::Bvh;
 #[cfg(target_arch = "x86_64")]
-use crate::fast::avx_boxes::AvxBoxes;
+use crate::fast::avx_lanes::AvxLanes;
 use crate::fast::sah;
 use crate::fast::traversal_stack::{Bits, Pending, Stack};
 use crate::fast::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
 use crate::fast::wide_node::{
-    Limit, NodeTest, Portable, WIDTH, WideNode, WideRay, round_down, round_up,
+    EightLanes, Limit, Portable, WIDTH, WideNode, WideRay, round_down, round_up,
 };
 use crate::geometry::{Ray, ShearedRay, TriangleTest};
 use crate::maths::{Real, Vec3};
 use crate::meshes::{Mesh, MeshHit, Search};
 
-/// How the boxes of a node are tested.
+/// How the eight boxes of a node and the eight triangles of a group are tested.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum BoxLanes {
+pub enum TestLanes {
     /// Eight at once in AVX instructions, on a processor that has them.
     #[cfg(target_arch = "x86_64")]
-    Avx(AvxBoxes),
+    Avx(AvxLanes),
     /// As two halves of four, on any processor.
     Portable,
 }
 
-impl BoxLanes {
+impl TestLanes {
     /// The fastest this processor has.
-    pub fn fastest() -> BoxLanes {
+    pub fn fastest() -> TestLanes {
         #[cfg(target_arch = "x86_64")]
-        if let Some(avx) = AvxBoxes::detect() {
-            return BoxLanes::Avx(avx);
+        if let Some(avx) = AvxLanes::detect() {
+            return TestLanes::Avx(avx);
         }
-        BoxLanes::Portable
+        TestLanes::Portable
     }
 }
 
@@ -44,20 +44,20 @@ impl BoxLanes {
 pub struct FastBvh {
     /// The nodes, the root first.
     nodes: Vec<WideNode>,
-    /// Each leaf's triangles in groups of four, in single precision, for the
-    /// pre-test; group `g` holds slots `4 g` to `4 g + 3`.
+    /// Each leaf's triangles in groups of eight, in single precision, for the
+    /// pre-test; group `g` holds slots `8 g` to `8 g + 7`.
     groups: Vec<TriangleGroup>,
     /// The mesh's index of the triangle in every slot, for the exact test on the
     /// mesh's own corners. A leaf's last group is padded with its last triangle.
     ids: Vec<u32>,
-    /// How the traversal tests a node's boxes.
-    box_lanes: BoxLanes,
+    /// How the traversal tests boxes and triangle groups.
+    test_lanes: TestLanes,
 }
 
 impl FastBvh {
     /// The hierarchy of `mesh` built with the surface area heuristic
     /// ([`sah::build`]), leaves of at most `max_leaf` triangles, collapsed to
-    /// eight children per node, its boxes tested in the fastest lanes this
+    /// eight children per node, its boxes and triangles tested in the fastest lanes this
     /// processor has.
     pub fn build(mesh: &Mesh, max_leaf: u16) -> FastBvh {
         let bvh = sah::build(mesh, max_leaf.into(), GROUP);
@@ -65,7 +65,7 @@ impl FastBvh {
             nodes: vec![],
             groups: vec![],
             ids: Vec::with_capacity(mesh.triangles.len()),
-            box_lanes: BoxLanes::fastest(),
+            test_lanes: TestLanes::fastest(),
         };
         fast.nodes.push(WideNode::EMPTY);
         if mesh.triangles.is_empty() {
@@ -99,10 +99,10 @@ impl FastBvh {
         fast
     }
 
-    /// The same hierarchy with its boxes tested in `box_lanes`: to compare them,
+    /// The same hierarchy with its tests made in `test_lanes`: to compare them,
     /// or to test the portable lanes on a processor that has faster ones.
-    pub fn with_box_lanes(self, box_lanes: BoxLanes) -> FastBvh {
-        FastBvh { box_lanes, ..self }
+    pub fn with_lanes(self, test_lanes: TestLanes) -> FastBvh {
+        FastBvh { test_lanes, ..self }
     }
 
     /// Appends a leaf's triangles: their groups, and their indices padded to whole
@@ -117,7 +117,7 @@ impl FastBvh {
         }
     }
 
-    /// The triangle groups of a leaf: group `g` holds slots `4 g` to `4 g + 3`.
+    /// The triangle groups of a leaf: group `g` holds slots `8 g` to `8 g + 7`.
     #[inline]
     fn groups_of(leaf: Pending) -> std::ops::Range<usize> {
         let first = leaf.child as usize;
@@ -125,14 +125,20 @@ impl FastBvh {
     }
 
     /// The lanes of group `g` of `leaf` whose triangle the ray may meet (bit `i` for
-    /// slot `4 g + i`): those the single-precision pre-test keeps
+    /// slot `8 g + i`): those the single-precision pre-test keeps
     /// ([`TriangleGroup::candidates`]) when there is a pre-test ray, every filled
     /// lane otherwise.
-    #[inline]
-    fn candidates(&self, leaf: Pending, g: usize, ray: Option<&GroupRay>) -> u32 {
+    #[inline(always)]
+    fn candidates(
+        &self,
+        tests: impl EightLanes,
+        leaf: Pending,
+        g: usize,
+        ray: Option<&GroupRay>,
+    ) -> u32 {
         let filled = lanes(leaf.count as usize - (g - leaf.child as usize) * GROUP);
         match ray {
-            Some(ray) => filled & self.groups[g].candidates(ray),
+            Some(ray) => filled & tests.candidates(&self.groups[g], ray),
             None => filled,
         }
     }
@@ -144,18 +150,18 @@ impl Search for FastBvh {
     }
 
     fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
-        match self.box_lanes {
+        match self.test_lanes {
             #[cfg(target_arch = "x86_64")]
-            BoxLanes::Avx(avx) => avx.run(|avx| self.nearest_with(avx, mesh, ray, t_max)),
-            BoxLanes::Portable => self.nearest_with(Portable, mesh, ray, t_max),
+            TestLanes::Avx(avx) => avx.run(|avx| self.nearest_with(avx, mesh, ray, t_max)),
+            TestLanes::Portable => self.nearest_with(Portable, mesh, ray, t_max),
         }
     }
 
     fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
-        match self.box_lanes {
+        match self.test_lanes {
             #[cfg(target_arch = "x86_64")]
-            BoxLanes::Avx(avx) => avx.run(|avx| self.occluded_with(avx, mesh, ray, t_max)),
-            BoxLanes::Portable => self.occluded_with(Portable, mesh, ray, t_max),
+            TestLanes::Avx(avx) => avx.run(|avx| self.occluded_with(avx, mesh, ray, t_max)),
+            TestLanes::Portable => self.occluded_with(Portable, mesh, ray, t_max),
         }
     }
 }
@@ -164,7 +170,7 @@ impl FastBvh {
     // ANCHOR: fast_traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`: the same
     /// hit as the course's [`Bvh`] (equal distances go to the lower triangle index),
-    /// with each node's boxes tested by `boxes`. A ray that misses the mesh's box
+    /// with the boxes and triangle groups tested by `tests`. A ray that misses the mesh's box
     /// (most rays, in a room where the mesh is small) is turned away by that one slab
     /// test, as the course's bounding box does, before anything else is made for it.
     /// Of the children a ray enters, the nearest is visited next and the others wait
@@ -174,7 +180,7 @@ impl FastBvh {
     #[inline(always)]
     fn nearest_with(
         &self,
-        boxes: impl NodeTest,
+        tests: impl EightLanes,
         mesh: &Mesh,
         ray: &Ray,
         t_max: Real,
@@ -196,13 +202,13 @@ impl FastBvh {
             }
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
-                let (mask, entry) = boxes.enters(&wide, node, box_limit);
+                let (mask, entry) = tests.enters(&wide, node, box_limit);
                 next = stack.push_all_but_nearest(node, mask, entry);
                 continue;
             }
             let (sheared, group_ray) = leaf_rays.get(mesh, ray);
             for g in FastBvh::groups_of(pending) {
-                for lane in Bits(self.candidates(pending, g, group_ray)) {
+                for lane in Bits(self.candidates(tests, pending, g, group_ray)) {
                     let triangle = self.ids[GROUP * g + lane];
                     if let Some(at) = mesh.hit_triangle(ray, sheared, triangle, triangle_limit)
                         && best.is_none_or(|b| (at.t, triangle) < (b.at.t, b.triangle))
@@ -219,9 +225,9 @@ impl FastBvh {
     // ANCHOR_END: fast_traverse
 
     /// Whether `ray` meets any triangle of `mesh` closer than `t_max`, stopping at
-    /// the first one found; each node's boxes tested by `boxes`.
+    /// the first one found; the boxes and triangle groups tested by `tests`.
     #[inline(always)]
-    fn occluded_with(&self, boxes: impl NodeTest, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
+    fn occluded_with(&self, tests: impl EightLanes, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let inv_direction = ray.direction.recip();
         if mesh.bounds.entry(ray, inv_direction, t_max).is_none() {
             return false;
@@ -234,13 +240,13 @@ impl FastBvh {
         while let Some(pending) = stack.pop() {
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
-                let (mask, _) = boxes.enters(&wide, node, limit);
+                let (mask, _) = tests.enters(&wide, node, limit);
                 stack.push_all(node, mask);
                 continue;
             }
             let (sheared, group_ray) = leaf_rays.get(mesh, ray);
             for g in FastBvh::groups_of(pending) {
-                for lane in Bits(self.candidates(pending, g, group_ray)) {
+                for lane in Bits(self.candidates(tests, pending, g, group_ray)) {
                     let triangle = self.ids[GROUP * g + lane];
                     if mesh.hit_triangle(ray, sheared, triangle, t_max).is_some() {
                         return true;

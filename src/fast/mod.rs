@@ -13,10 +13,11 @@
 //! | [`meshes_at_once`] | 5 | the meshes those paths meet, searched after their spheres | `Scene::intersect` |
 //! | [`sah`] | 6 | splits chosen by the surface area heuristic | `Bvh::build` |
 //! | [`wide_node`] | 6 | eight boxes tested at once, on any processor | `Aabb::entry` |
-//! | `avx_boxes` | 6 | the same test in AVX instructions, on x86-64 | |
+//! | [`float_lanes`] | 6 | `f32` lanes as one type, for the triangle groups' test | |
+//! | `avx_lanes` | 6 | the boxes' and triangles' tests in AVX instructions, on x86-64 | |
 //! | [`traversal_stack`] | 6 | the children yet to visit, nearest on top | the course's stack |
-//! | [`fast_bvh`] | 6 | the hierarchy of eight-box nodes and four-triangle groups | `Bvh` |
-//! | [`triangle_group`] | 6 | the single-precision pre-test of four triangles | the ray-triangle test |
+//! | [`fast_bvh`] | 6 | the hierarchy of eight-box nodes and eight-triangle groups | `Bvh` |
+//! | [`triangle_group`] | 6 | the single-precision pre-test of eight triangles | the ray-triangle test |
 
 #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
 pub mod avx;
@@ -27,9 +28,11 @@ pub mod portable;
 pub mod sphere_lanes;
 
 #[cfg(all(target_arch = "x86_64", feature = "s6"))]
-pub mod avx_boxes;
+pub mod avx_lanes;
 #[cfg(feature = "s6")]
 pub mod fast_bvh;
+#[cfg(feature = "s6")]
+pub mod float_lanes;
 #[cfg(feature = "s5")]
 pub mod meshes_at_once;
 #[cfg(feature = "s6")]

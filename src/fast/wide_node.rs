@@ -1,9 +1,10 @@
 //! One node of the fast hierarchy: the boxes of its eight children, which a ray
 //! tests at once, eight single-precision numbers per operation where the processor
-//! has AVX ([`crate::fast::avx_boxes`]) and as two halves of four on any other.
+//! has AVX (`crate::fast::avx_lanes`) and as two halves of four on any other.
 
 use glam::Vec4;
 
+use crate::fast::triangle_group::{GroupRay, TriangleGroup};
 use crate::geometry::Ray;
 use crate::maths::{Real, Vec3, to_single};
 
@@ -92,7 +93,7 @@ pub struct WideRay {
 
 impl WideRay {
     /// `ray`, whose inverse direction is `inv_direction`, for the box tests.
-    #[inline]
+    #[inline(always)]
     pub fn new(ray: &Ray, inv_direction: Vec3) -> WideRay {
         let inv_direction = inv_direction.to_array().map(to_single);
         let (above, below) = (
@@ -115,18 +116,28 @@ impl WideRay {
     }
 }
 
-/// The slab test of a node's eight boxes, one implementation per kind of lanes.
-pub trait NodeTest: Copy {
+/// The tests the fast hierarchy makes eight at a time, a node's boxes and a group's
+/// triangles, one implementation per kind of lanes.
+pub trait EightLanes: Copy {
     /// Which of `node`'s boxes `ray` enters before `limit` (bit `i` for child `i`),
     /// and the distances at which it enters them.
     fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]);
+
+    /// The triangles of `group` that `ray` may meet
+    /// ([`TriangleGroup::candidates_in`]).
+    fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32;
 }
 
-/// The slab test on any processor: the eight boxes as two halves of four lanes.
+/// The tests on any processor: eight lanes as two halves of four.
 #[derive(Clone, Copy, Debug)]
 pub struct Portable;
 
-impl NodeTest for Portable {
+impl EightLanes for Portable {
+    #[inline(always)]
+    fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32 {
+        group.candidates(ray)
+    }
+
     // ANCHOR: wide_slab
     /// The slab test of [`Aabb::entry`](crate::geometry::Aabb::entry) on four
     /// boxes at once, twice. Per axis the ray enters the slab at its near plane and

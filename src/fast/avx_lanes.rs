@@ -1,0 +1,285 @@
+//! The fast hierarchy's tests on eight `f32` lanes in AVX instructions, on the
+//! x86-64 processors that have them: a node's eight boxes and a group's eight
+//! triangles. The processor is asked at run time ([`AvxLanes::detect`]), so the build
+//! needs no flag.
+//!
+//! As in [`crate::fast::avx`], the functions using AVX are compiled with it
+//! (`#[target_feature(enable = "avx")]`), and code compiled without it calls them
+//! only where an [`AvxLanes`] proves that the processor has AVX: the search is run
+//! through [`AvxLanes::run`], so that the tests inline into it. An [`Eight`], eight
+//! lanes in one register, is made only from an `AvxLanes`, so that its operations
+//! may use AVX too.
+#![allow(unsafe_code)]
+
+use std::arch::x86_64::{
+    __m256, _CMP_GT_OQ, _CMP_LE_OQ, _CMP_LT_OQ, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps,
+    _mm256_cmp_ps, _mm256_load_ps, _mm256_loadu_ps, _mm256_max_ps, _mm256_min_ps,
+    _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps, _mm256_setzero_ps,
+    _mm256_storeu_ps, _mm256_sub_ps, _mm256_xor_ps,
+};
+use std::ops::{Add, BitAnd, BitOr, Mul, Neg, Sub};
+
+use crate::fast::float_lanes::{FloatLanes, LaneSource};
+use crate::fast::triangle_group::{GroupRay, TriangleGroup};
+use crate::fast::wide_node::{EightLanes, Limit, WIDENING, WIDTH, WideNode, WideRay};
+
+/// Proof that this processor has AVX: made only by [`AvxLanes::detect`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AvxLanes(());
+
+impl AvxLanes {
+    /// `Some` where the processor has AVX.
+    pub fn detect() -> Option<AvxLanes> {
+        std::arch::is_x86_feature_detected!("avx").then_some(AvxLanes(()))
+    }
+
+    /// Runs `search` compiled with AVX, so that the slab tests it makes inline
+    /// into it as AVX instructions instead of being called one node at a time.
+    #[inline(always)]
+    pub fn run<T>(self, search: impl FnOnce(AvxLanes) -> T) -> T {
+        // SAFETY: an `AvxLanes` is made only by `detect`, where the processor has
+        // AVX, so code compiled with AVX can run.
+        unsafe { with_avx(self, search) }
+    }
+}
+
+/// `search(avx)`, compiled with AVX.
+#[target_feature(enable = "avx")]
+fn with_avx<T>(avx: AvxLanes, search: impl FnOnce(AvxLanes) -> T) -> T {
+    search(avx)
+}
+
+impl EightLanes for AvxLanes {
+    /// The slab test of [`Portable`](crate::fast::wide_node::Portable), on the
+    /// eight boxes at once.
+    #[inline(always)]
+    fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
+        // SAFETY: an `AvxLanes` is made only by `detect`, where the processor has
+        // AVX.
+        unsafe { enters(ray, node, limit) }
+    }
+
+    /// The pre-test of the eight triangles at once.
+    #[inline(always)]
+    fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32 {
+        group.candidates_in(ray, self)
+    }
+}
+
+impl LaneSource for AvxLanes {
+    type Lanes = Eight;
+
+    /// The eight numbers of `row`.
+    #[inline(always)]
+    fn load(self, row: &[f32; 8]) -> Eight {
+        // SAFETY: an `AvxLanes` is made only where the processor has AVX, and
+        // `row` holds eight `f32`.
+        Eight(unsafe { _mm256_loadu_ps(row.as_ptr()) })
+    }
+
+    /// `x` in every lane.
+    #[inline(always)]
+    fn splat(self, x: f32) -> Eight {
+        // SAFETY: an `AvxLanes` is made only where the processor has AVX.
+        Eight(unsafe { _mm256_set1_ps(x) })
+    }
+}
+
+/// Eight `f32` in an AVX register, made only from an [`AvxLanes`].
+#[derive(Clone, Copy)]
+pub struct Eight(__m256);
+
+/// Implements a binary operator of [`Eight`] by an AVX instruction.
+macro_rules! eight_operator {
+    ($trait:ident, $method:ident, $instruction:ident) => {
+        impl $trait for Eight {
+            type Output = Eight;
+            #[inline(always)]
+            fn $method(self, other: Eight) -> Eight {
+                // SAFETY: an `Eight` exists only where the processor has AVX.
+                Eight(unsafe { $instruction(self.0, other.0) })
+            }
+        }
+    };
+}
+
+eight_operator!(Add, add, _mm256_add_ps);
+eight_operator!(Sub, sub, _mm256_sub_ps);
+eight_operator!(Mul, mul, _mm256_mul_ps);
+eight_operator!(BitAnd, bitand, _mm256_and_ps);
+eight_operator!(BitOr, bitor, _mm256_or_ps);
+
+impl Mul<f32> for Eight {
+    type Output = Eight;
+    #[inline(always)]
+    fn mul(self, x: f32) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        self * Eight(unsafe { _mm256_set1_ps(x) })
+    }
+}
+
+impl Neg for Eight {
+    type Output = Eight;
+    #[inline(always)]
+    fn neg(self) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_xor_ps(self.0, _mm256_set1_ps(-0.0)) })
+    }
+}
+
+impl FloatLanes for Eight {
+    /// A comparison's result: all ones in a true lane, zeros in a false one.
+    type Mask = Eight;
+    const LANES: usize = 8;
+
+    #[inline(always)]
+    fn abs(self) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_andnot_ps(_mm256_set1_ps(-0.0), self.0) })
+    }
+
+    #[inline(always)]
+    fn lt(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_cmp_ps::<_CMP_LT_OQ>(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn gt(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_cmp_ps::<_CMP_GT_OQ>(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn bits(mask: Eight) -> u32 {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        unsafe { _mm256_movemask_ps(mask.0) as u32 }
+    }
+}
+
+/// The eight lanes of `plane` of `node`.
+#[target_feature(enable = "avx")]
+#[inline]
+fn plane(node: &WideNode, plane: usize) -> __m256 {
+    // SAFETY: `planes[plane]` is eight `f32`, 32-byte aligned (a node is aligned to
+    // 64 bytes and each plane is 32 bytes long).
+    unsafe { _mm256_load_ps(node.planes[plane].as_ptr()) }
+}
+
+#[target_feature(enable = "avx")]
+#[inline]
+fn enters(ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
+    let mut entry = _mm256_setzero_ps();
+    let mut exit = _mm256_set1_ps(f32::INFINITY);
+    for axis in 0..3 {
+        let inv_direction = _mm256_set1_ps(ray.inv_direction[axis]);
+        let crossing = |p: usize, origin: f32| {
+            _mm256_mul_ps(
+                _mm256_sub_ps(plane(node, p), _mm256_set1_ps(origin)),
+                inv_direction,
+            )
+        };
+        entry = _mm256_max_ps(entry, crossing(ray.near[axis], ray.near_origin[axis]));
+        exit = _mm256_min_ps(exit, crossing(ray.far[axis], ray.far_origin[axis]));
+    }
+    let exit = _mm256_min_ps(
+        _mm256_mul_ps(exit, _mm256_set1_ps(WIDENING)),
+        _mm256_set1_ps(limit.0),
+    );
+    let mask = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(entry, exit)) as u32;
+    let mut entries = [0.0; WIDTH];
+    // SAFETY: `entries` holds eight `f32`.
+    unsafe { _mm256_storeu_ps(entries.as_mut_ptr(), entry) };
+    (mask, entries)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::fast::triangle_group::GROUP;
+    use crate::fast::wide_node::Portable;
+    use crate::geometry::{Ray, ShearedRay};
+    use crate::maths::{Real, Vec3, pixel_rng, to_single, uniform};
+
+    /// The AVX lanes and the portable ones report the same boxes entered at the same
+    /// distances, to the bit, for rays in every direction, parallel to the axes
+    /// (zero components, of either sign) and starting inside boxes, and for empty
+    /// slots.
+    #[test]
+    fn avx_and_portable_lanes_enter_the_same_boxes_to_the_bit() {
+        let Some(avx) = AvxLanes::detect() else {
+            return;
+        };
+        let mut rng = pixel_rng(11, 0);
+        let mut coordinate = |r: Real| (uniform(&mut rng) * 2.0 - 1.0) * r;
+        let mut entered = 0;
+        for trial in 0..20_000 {
+            let mut node = WideNode::EMPTY;
+            for lane in 0..WIDTH - trial % 3 {
+                for axis in 0..3 {
+                    let (a, b) = (coordinate(2.0), coordinate(2.0));
+                    node.planes[axis][lane] = to_single(a.min(b));
+                    node.planes[axis + 3][lane] = to_single(a.max(b));
+                }
+            }
+            let mut direction = Vec3::new(coordinate(1.0), coordinate(1.0), coordinate(1.0));
+            direction[trial % 4 % 3] *= if trial % 8 < 4 { 0.0 } else { 1.0 };
+            direction[(trial + 1) % 3] *= if trial % 16 == 0 { -0.0 } else { 1.0 };
+            let ray = Ray::new(
+                Vec3::new(coordinate(1.0), coordinate(1.0), coordinate(1.0)),
+                direction.normalize(),
+            );
+            let wide = WideRay::new(&ray, ray.direction.recip());
+            let limit = Limit::new(coordinate(10.0).abs());
+            let (mask, entries) = avx.run(|avx| avx.enters(&wide, &node, limit));
+            let (portable_mask, portable_entries) = Portable.enters(&wide, &node, limit);
+            assert_eq!(mask, portable_mask, "{ray:?} {node:?}");
+            for lane in 0..WIDTH {
+                if mask & (1 << lane) != 0 {
+                    assert_eq!(entries[lane].to_bits(), portable_entries[lane].to_bits());
+                }
+            }
+            entered += mask.count_ones();
+        }
+        assert!(
+            entered > 20_000,
+            "only {entered} boxes entered: the test is vacuous"
+        );
+    }
+
+    /// The AVX lanes and the portable ones keep the same triangles of a group, for
+    /// rays aimed at the group's corners from near and far.
+    #[test]
+    fn avx_and_portable_lanes_keep_the_same_triangles() {
+        let Some(avx) = AvxLanes::detect() else {
+            return;
+        };
+        let mut rng = pixel_rng(12, 0);
+        let mut point = |r: Real| {
+            Vec3::new(uniform(&mut rng), uniform(&mut rng), uniform(&mut rng)) * (2.0 * r)
+                - Vec3::splat(r)
+        };
+        let (mut kept, mut set_aside) = (0, 0);
+        for trial in 0..20_000 {
+            let triangles: Vec<[Vec3; 3]> = (0..1 + trial % GROUP)
+                .map(|_| {
+                    let centre = point(1.0);
+                    [0, 1, 2].map(|_| centre + point(0.05))
+                })
+                .collect();
+            let group = TriangleGroup::new(&triangles);
+            let target = triangles[0][trial % 3];
+            let origin = target + point(if trial % 2 == 0 { 2.0 } else { 1e-3 });
+            let ray = Ray::new(origin, (target - origin).normalize());
+            let group_ray = GroupRay::new(&ShearedRay::new(&ray));
+            let lanes = avx.run(|avx| avx.candidates(&group, &group_ray));
+            assert_eq!(lanes, group.candidates(&group_ray), "{ray:?} {triangles:?}");
+            kept += lanes.count_ones();
+            set_aside += 8 - lanes.count_ones();
+        }
+        assert!(
+            kept > 20_000 && set_aside > 20_000,
+            "{kept} kept, {set_aside} set aside"
+        );
+    }
+}
