@@ -44,7 +44,8 @@ pub struct GroupRay {
 impl GroupRay {
     /// The single-precision copy of `sheared`.
     pub fn new(sheared: &ShearedRay) -> GroupRay {
-        let origin = sheared.origin.to_array().map(to_single);
+        let o = sheared.origin;
+        let origin = [to_single(o.x), to_single(o.y), to_single(o.z)];
         GroupRay {
             origin,
             axes: sheared.axes,
@@ -144,7 +145,7 @@ fn sheared<S: LaneSource>(
     let [kx, ky, kz] = ray.axes;
     let q = |axis: usize| source.load(&p[axis]) - source.splat(ray.origin[axis]);
     let z = q(kz);
-    let [sx, sy] = ray.shear.map(|s| source.splat(s));
+    let (sx, sy) = (source.splat(ray.shear[0]), source.splat(ray.shear[1]));
     (q(kx) + sx * z, q(ky) + sy * z, z)
 }
 

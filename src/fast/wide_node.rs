@@ -95,24 +95,24 @@ impl WideRay {
     /// `ray`, whose inverse direction is `inv_direction`, for the box tests.
     #[inline(always)]
     pub fn new(ray: &Ray, inv_direction: Vec3) -> WideRay {
-        let inv_direction = inv_direction.to_array().map(to_single);
-        let (above, below) = (
-            ray.origin.to_array().map(round_up),
-            ray.origin.to_array().map(round_down),
-        );
-        let up = |axis: usize| inv_direction[axis].is_sign_positive();
-        let pick = |axis: usize, if_up: (usize, f32), if_down: (usize, f32)| {
-            if up(axis) { if_up } else { if_down }
+        let mut wide = WideRay {
+            near: [0, 1, 2],
+            far: [3, 4, 5],
+            near_origin: [0.0; 3],
+            far_origin: [0.0; 3],
+            inv_direction: [0.0; 3],
         };
-        let near = [0, 1, 2].map(|a| pick(a, (a, above[a]), (a + 3, below[a])));
-        let far = [0, 1, 2].map(|a| pick(a, (a + 3, below[a]), (a, above[a])));
-        WideRay {
-            near: near.map(|(plane, _)| plane),
-            far: far.map(|(plane, _)| plane),
-            near_origin: near.map(|(_, origin)| origin),
-            far_origin: far.map(|(_, origin)| origin),
-            inv_direction,
+        for axis in 0..3 {
+            let (above, below) = (round_up(ray.origin[axis]), round_down(ray.origin[axis]));
+            wide.inv_direction[axis] = to_single(inv_direction[axis]);
+            (wide.near_origin[axis], wide.far_origin[axis]) = (above, below);
+            if wide.inv_direction[axis].is_sign_negative() {
+                wide.near[axis] = axis + 3;
+                wide.far[axis] = axis;
+                (wide.near_origin[axis], wide.far_origin[axis]) = (below, above);
+            }
         }
+        wide
     }
 }
 
