@@ -6,7 +6,8 @@
 //! (`#[target_feature(enable = "avx")]`): inside them the AVX instructions are safe
 //! to call. Calling one from code compiled without AVX is not, and is done in one
 //! place, [`Avx::nearest_of_four`], which holds the proof that the processor has
-//! AVX. That call is the crate's only `unsafe` code.
+//! AVX. That call is this file's only `unsafe` code (the eight-lane tests of the
+//! fast hierarchy, in `avx_lanes`, follow the same rule).
 #![allow(unsafe_code)]
 
 use std::arch::x86_64::{
