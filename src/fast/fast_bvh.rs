@@ -170,10 +170,10 @@ impl FastBvh {
     // ANCHOR: fast_traverse
     /// The nearest triangle of `mesh` that `ray` meets closer than `t_max`: the same
     /// hit as the course's [`Bvh`] (equal distances go to the lower triangle index),
-    /// with the boxes and triangle groups tested by `tests`. A ray that misses the mesh's box
-    /// (most rays, in a room where the mesh is small) is turned away by that one slab
-    /// test, as the course's bounding box does, before anything else is made for it.
-    /// Of the children a ray enters, the nearest is visited next and the others wait
+    /// with the boxes and triangle groups tested by `tests`. A ray that misses the
+    /// mesh's box (most rays, in a room where the mesh is small) is turned away by
+    /// that one slab test, as the course's bounding box does, before anything else
+    /// is computed for it. Of the children a ray enters, the nearest is visited next and the others wait
     /// on the stack, nearer ones on top; a child is skipped when popped if a hit
     /// found meanwhile is closer than its box. In a leaf, only the triangles the
     /// pre-test keeps get the exact test.

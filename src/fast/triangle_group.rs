@@ -93,7 +93,8 @@ impl TriangleGroup {
     /// `T = e_0 a_z + e_1 b_z + e_2 c_z`, whose sign times that of `s_z` and of the
     /// determinant is the sign of `t`, within
     /// `c sum |e| + d_e sum |z| + 3 d_e c + 3 u sum |e z|`. A lane is set aside only
-    /// when one edge function is below minus twice its bound and another above it,
+    /// when one edge function is below minus twice its bound and another above plus
+    /// twice it,
     /// or when the determinant's sign is certain and `t`'s is certainly negative, by
     /// twice the bounds: the exact values are then beyond any error of a double- or
     /// single-precision evaluation of the exact test, which would miss too.
