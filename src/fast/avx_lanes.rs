@@ -33,8 +33,9 @@ impl AvxLanes {
         std::arch::is_x86_feature_detected!("avx").then_some(AvxLanes(()))
     }
 
-    /// Runs `search` compiled with AVX, so that the slab tests it makes inline
-    /// into it as AVX instructions instead of being called one node at a time.
+    /// Runs `search` compiled with AVX, so that the tests it makes (boxes and
+    /// triangle groups) inline into it as AVX instructions instead of being called
+    /// one node or group at a time.
     #[inline(always)]
     pub fn run<T>(self, search: impl FnOnce(AvxLanes) -> T) -> T {
         // SAFETY: an `AvxLanes` is made only by `detect`, where the processor has
