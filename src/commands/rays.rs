@@ -50,10 +50,10 @@ enum BvhKind {
     /// Splits by the surface area heuristic, the course's nodes and traversal.
     Sah,
     /// Splits by the surface area heuristic, compact nodes, triangles in leaf order;
-    /// each node's eight boxes tested in the fastest lanes the processor has.
+    /// boxes and triangles tested in the fastest lanes the processor has.
     Fast,
-    /// The same hierarchy with its boxes tested as two halves of four lanes, as on
-    /// a processor without AVX.
+    /// The same hierarchy with its boxes and triangles tested as two halves of four
+    /// lanes, as on a processor without AVX.
     FastPortable,
 }
 

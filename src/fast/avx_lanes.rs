@@ -13,15 +13,14 @@
 
 use std::arch::x86_64::{
     __m256, _CMP_GT_OQ, _CMP_LE_OQ, _CMP_LT_OQ, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps,
-    _mm256_cmp_ps, _mm256_load_ps, _mm256_loadu_ps, _mm256_max_ps, _mm256_min_ps,
-    _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps, _mm256_setzero_ps,
-    _mm256_storeu_ps, _mm256_sub_ps, _mm256_xor_ps,
+    _mm256_cmp_ps, _mm256_loadu_ps, _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps,
+    _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps, _mm256_storeu_ps, _mm256_sub_ps, _mm256_xor_ps,
 };
 use std::ops::{Add, BitAnd, BitOr, Mul, Neg, Sub};
 
 use crate::fast::float_lanes::{FloatLanes, LaneSource};
 use crate::fast::triangle_group::{GroupRay, TriangleGroup};
-use crate::fast::wide_node::{EightLanes, Limit, WIDENING, WIDTH, WideNode, WideRay};
+use crate::fast::wide_node::{EightLanes, Limit, WIDTH, WideNode, WideRay, enters_in};
 
 /// Proof that this processor has AVX: made only by [`AvxLanes::detect`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -51,13 +50,12 @@ fn with_avx<T>(avx: AvxLanes, search: impl FnOnce(AvxLanes) -> T) -> T {
 }
 
 impl EightLanes for AvxLanes {
-    /// The slab test of [`Portable`](crate::fast::wide_node::Portable), on the
-    /// eight boxes at once.
+    /// The slab test of the eight boxes at once.
     #[inline(always)]
     fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
-        // SAFETY: an `AvxLanes` is made only by `detect`, where the processor has
-        // AVX.
-        unsafe { enters(ray, node, limit) }
+        let mut entries = [0.0; WIDTH];
+        let mask = enters_in(self, ray, node, limit, &mut entries);
+        (mask, entries)
     }
 
     /// The pre-test of the eight triangles at once.
@@ -83,6 +81,19 @@ impl LaneSource for AvxLanes {
     fn splat(self, x: f32) -> Eight {
         // SAFETY: an `AvxLanes` is made only where the processor has AVX.
         Eight(unsafe { _mm256_set1_ps(x) })
+    }
+
+    /// Writes the eight lanes to `row`.
+    #[inline(always)]
+    fn store(self, lanes: Eight, row: &mut [f32; 8]) {
+        // SAFETY: an `AvxLanes` is made only where the processor has AVX, and
+        // `row` holds eight `f32`.
+        unsafe { _mm256_storeu_ps(row.as_mut_ptr(), lanes.0) }
+    }
+
+    #[inline(always)]
+    fn first(self) -> usize {
+        0
     }
 }
 
@@ -152,46 +163,28 @@ impl FloatLanes for Eight {
     }
 
     #[inline(always)]
+    fn le(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_cmp_ps::<_CMP_LE_OQ>(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn max(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_max_ps(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn min(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_min_ps(self.0, other.0) })
+    }
+
+    #[inline(always)]
     fn bits(mask: Eight) -> u32 {
         // SAFETY: an `Eight` exists only where the processor has AVX.
         unsafe { _mm256_movemask_ps(mask.0) as u32 }
     }
-}
-
-/// The eight lanes of `plane` of `node`.
-#[target_feature(enable = "avx")]
-#[inline]
-fn plane(node: &WideNode, plane: usize) -> __m256 {
-    // SAFETY: `planes[plane]` is eight `f32`, 32-byte aligned (a node is aligned to
-    // 64 bytes and each plane is 32 bytes long).
-    unsafe { _mm256_load_ps(node.planes[plane].as_ptr()) }
-}
-
-#[target_feature(enable = "avx")]
-#[inline]
-fn enters(ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
-    let mut entry = _mm256_setzero_ps();
-    let mut exit = _mm256_set1_ps(f32::INFINITY);
-    for axis in 0..3 {
-        let inv_direction = _mm256_set1_ps(ray.inv_direction[axis]);
-        let crossing = |p: usize, origin: f32| {
-            _mm256_mul_ps(
-                _mm256_sub_ps(plane(node, p), _mm256_set1_ps(origin)),
-                inv_direction,
-            )
-        };
-        entry = _mm256_max_ps(entry, crossing(ray.near[axis], ray.near_origin[axis]));
-        exit = _mm256_min_ps(exit, crossing(ray.far[axis], ray.far_origin[axis]));
-    }
-    let exit = _mm256_min_ps(
-        _mm256_mul_ps(exit, _mm256_set1_ps(WIDENING)),
-        _mm256_set1_ps(limit.0),
-    );
-    let mask = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(entry, exit)) as u32;
-    let mut entries = [0.0; WIDTH];
-    // SAFETY: `entries` holds eight `f32`.
-    unsafe { _mm256_storeu_ps(entries.as_mut_ptr(), entry) };
-    (mask, entries)
 }
 
 #[cfg(test)]

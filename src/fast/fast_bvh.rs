@@ -57,8 +57,8 @@ pub struct FastBvh {
 impl FastBvh {
     /// The hierarchy of `mesh` built with the surface area heuristic
     /// ([`sah::build`]), leaves of at most `max_leaf` triangles, collapsed to
-    /// eight children per node, its boxes and triangles tested in the fastest lanes this
-    /// processor has.
+    /// eight children per node, its boxes and triangles tested in the fastest lanes
+    /// this processor has.
     pub fn build(mesh: &Mesh, max_leaf: u16) -> FastBvh {
         let bvh = sah::build(mesh, max_leaf.into(), GROUP);
         let mut fast = FastBvh {
@@ -173,10 +173,10 @@ impl FastBvh {
     /// with the boxes and triangle groups tested by `tests`. A ray that misses the
     /// mesh's box (most rays, in a room where the mesh is small) is turned away by
     /// that one slab test, as the course's bounding box does, before anything else
-    /// is computed for it. Of the children a ray enters, the nearest is visited next and the others wait
-    /// on the stack, nearer ones on top; a child is skipped when popped if a hit
-    /// found meanwhile is closer than its box. In a leaf, only the triangles the
-    /// pre-test keeps get the exact test.
+    /// is computed for it. Of the children a ray enters, the nearest is visited next
+    /// and the others wait on the stack, nearer ones on top; a child is skipped when
+    /// popped if a hit found meanwhile is closer than its box. In a leaf, only the
+    /// triangles the pre-test keeps get the exact test.
     #[inline(always)]
     fn nearest_with(
         &self,

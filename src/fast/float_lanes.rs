@@ -1,7 +1,7 @@
 //! Single-precision numbers side by side in a SIMD register, as one type: the
-//! operations the triangle groups' pre-test needs, so that it is written once for
-//! four lanes on any processor (glam's `Vec4`) and for eight in AVX
-//! (`crate::fast::avx_lanes`).
+//! operations the fast hierarchy's slab test and triangle pre-test need, so that
+//! each is written once for four lanes on any processor (glam's `Vec4`) and for
+//! eight in AVX (`crate::fast::avx_lanes`).
 
 use std::ops::{Add, BitAnd, BitOr, Mul, Neg, Sub};
 
@@ -31,6 +31,16 @@ pub trait FloatLanes:
     /// Each lane's `self > other`.
     fn gt(self, other: Self) -> Self::Mask;
 
+    /// Each lane's `self <= other`.
+    fn le(self, other: Self) -> Self::Mask;
+
+    /// Each lane's larger value; `other` where either is NaN (as the SSE and AVX
+    /// `max` instructions do).
+    fn max(self, other: Self) -> Self;
+
+    /// Each lane's smaller value; `other` where either is NaN.
+    fn min(self, other: Self) -> Self;
+
     /// The mask as bits, bit `i` for lane `i`.
     fn bits(mask: Self::Mask) -> u32;
 }
@@ -55,6 +65,21 @@ impl FloatLanes for Vec4 {
     }
 
     #[inline(always)]
+    fn le(self, other: Vec4) -> BVec4A {
+        self.cmple(other)
+    }
+
+    #[inline(always)]
+    fn max(self, other: Vec4) -> Vec4 {
+        Vec4::max(self, other)
+    }
+
+    #[inline(always)]
+    fn min(self, other: Vec4) -> Vec4 {
+        Vec4::min(self, other)
+    }
+
+    #[inline(always)]
     fn bits(mask: BVec4A) -> u32 {
         mask.bitmask()
     }
@@ -71,6 +96,13 @@ pub trait LaneSource: Copy {
 
     /// `x` in every lane.
     fn splat(self, x: f32) -> Self::Lanes;
+
+    /// Writes `lanes` to the places of `row` this source stands for.
+    fn store(self, lanes: Self::Lanes, row: &mut [f32; 8]);
+
+    /// The first lane of a row this source stands for: bit `i` of a mask of its
+    /// lanes is lane `first + i` of the row.
+    fn first(self) -> usize;
 }
 
 /// Four lanes of a row of eight, from the given one on (0 or 4).
@@ -88,5 +120,15 @@ impl LaneSource for Half {
     #[inline(always)]
     fn splat(self, x: f32) -> Vec4 {
         Vec4::splat(x)
+    }
+
+    #[inline(always)]
+    fn store(self, lanes: Vec4, row: &mut [f32; 8]) {
+        lanes.write_to_slice(&mut row[self.0..]);
+    }
+
+    #[inline(always)]
+    fn first(self) -> usize {
+        self.0
     }
 }

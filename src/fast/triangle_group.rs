@@ -22,9 +22,9 @@ const UNIT_ROUNDOFF: f32 = f32::EPSILON / 2.0;
 #[repr(C, align(32))]
 pub struct TriangleGroup {
     /// The corners, by corner and axis.
-    pub corners: [[[f32; GROUP]; 3]; 3],
+    corners: [[[f32; GROUP]; 3]; 3],
     /// Per lane, the largest magnitude of any of the triangle's coordinates.
-    pub reach: [f32; GROUP],
+    reach: [f32; GROUP],
 }
 
 /// A ray in the watertight test's frame, in single precision.
@@ -94,9 +94,8 @@ impl TriangleGroup {
     /// determinant is the sign of `t`, within
     /// `c sum |e| + d_e sum |z| + 3 d_e c + 3 u sum |e z|`. A lane is set aside only
     /// when one edge function is below minus twice its bound and another above plus
-    /// twice it,
-    /// or when the determinant's sign is certain and `t`'s is certainly negative, by
-    /// twice the bounds: the exact values are then beyond any error of a double- or
+    /// twice it, or when the determinant's sign is certain and `t`'s is certainly
+    /// negative, by twice the bounds: the exact values are then beyond any error of a double- or
     /// single-precision evaluation of the exact test, which would miss too.
     ///
     /// The lanes are those that `source` loads (all eight, or a half of four).

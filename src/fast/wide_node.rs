@@ -2,8 +2,7 @@
 //! tests at once, eight single-precision numbers per operation where the processor
 //! has AVX (`crate::fast::avx_lanes`) and as two halves of four on any other.
 
-use glam::Vec4;
-
+use crate::fast::float_lanes::{FloatLanes, Half, LaneSource};
 use crate::fast::triangle_group::{GroupRay, TriangleGroup};
 use crate::geometry::Ray;
 use crate::maths::{Real, Vec3, to_single};
@@ -54,7 +53,7 @@ pub fn round_up(x: Real) -> f32 {
 }
 
 /// `1 + 2 delta_3` in single precision, rounded up.
-pub const WIDENING: f32 = 1.0 + 8.0 * f32::EPSILON;
+const WIDENING: f32 = 1.0 + 8.0 * f32::EPSILON;
 
 /// How far the box tests look: a distance rounded up to single precision and
 /// widened like a box's exit, capped at the largest finite float so that no box is
@@ -134,37 +133,47 @@ pub struct Portable;
 
 impl EightLanes for Portable {
     #[inline(always)]
+    fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
+        let mut entries = [0.0; WIDTH];
+        let mask = enters_in(Half(0), ray, node, limit, &mut entries)
+            | enters_in(Half(4), ray, node, limit, &mut entries);
+        (mask, entries)
+    }
+
+    #[inline(always)]
     fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32 {
         group.candidates(ray)
     }
-
-    // ANCHOR: wide_slab
-    /// The slab test of [`Aabb::entry`](crate::geometry::Aabb::entry) on four
-    /// boxes at once, twice. Per axis the ray enters the slab at its near plane and
-    /// leaves at its far one; the box is entered at the farthest entry (and not
-    /// before the ray's start) and left at the nearest exit. Each distance carries
-    /// at most three roundings, so the exit is widened by `1 + 2 delta_3`; `limit`
-    /// is finite and already widened.
-    #[inline(always)]
-    fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
-        let mut mask = 0;
-        let mut entries = [0.0; WIDTH];
-        for half in [0, 4] {
-            let planes = |plane: usize| Vec4::from_slice(&node.planes[plane][half..]);
-            let mut entry = Vec4::ZERO;
-            let mut exit = Vec4::INFINITY;
-            for axis in 0..3 {
-                let inv_direction = Vec4::splat(ray.inv_direction[axis]);
-                let near = (planes(ray.near[axis]) - ray.near_origin[axis]) * inv_direction;
-                let far = (planes(ray.far[axis]) - ray.far_origin[axis]) * inv_direction;
-                entry = entry.max(near);
-                exit = exit.min(far);
-            }
-            let exit = (exit * WIDENING).min(Vec4::splat(limit.0));
-            mask |= entry.cmple(exit).bitmask() << half;
-            entry.write_to_slice(&mut entries[half..]);
-        }
-        (mask, entries)
-    }
-    // ANCHOR_END: wide_slab
 }
+
+// ANCHOR: wide_slab
+/// Which of the boxes of `node` that `source` loads the ray enters before `limit`
+/// (bit `i` for child `i`), their entry distances written to `entries`: the slab
+/// test of [`Aabb::entry`](crate::geometry::Aabb::entry) on several boxes at once.
+/// Per axis the ray enters the slab at its near plane and leaves at its far one;
+/// the box is entered at the farthest entry (and not before the ray's start) and
+/// left at the nearest exit. Each distance carries at most three roundings, so the
+/// exit is widened by `1 + 2 delta_3`; `limit` is finite and already widened.
+#[inline(always)]
+pub fn enters_in<S: LaneSource>(
+    source: S,
+    ray: &WideRay,
+    node: &WideNode,
+    limit: Limit,
+    entries: &mut [f32; WIDTH],
+) -> u32 {
+    let mut entry = source.splat(0.0);
+    let mut exit = source.splat(f32::INFINITY);
+    for axis in 0..3 {
+        let inv_direction = source.splat(ray.inv_direction[axis]);
+        let crossing = |plane: usize, origin: f32| {
+            (source.load(&node.planes[plane]) - source.splat(origin)) * inv_direction
+        };
+        entry = entry.max(crossing(ray.near[axis], ray.near_origin[axis]));
+        exit = exit.min(crossing(ray.far[axis], ray.far_origin[axis]));
+    }
+    let exit = (exit * WIDENING).min(source.splat(limit.0));
+    source.store(entry, entries);
+    S::Lanes::bits(entry.le(exit)) << source.first()
+}
+// ANCHOR_END: wide_slab
