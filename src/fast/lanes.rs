@@ -11,6 +11,8 @@
 //! [`Sphere::intersect`](crate::geometry::Sphere::intersect), in the same order, so
 //! every distance is the same number to the last bit.
 
+use crate::maths::Real;
+
 /// Defines `meet` and `nearest_of_four` in the module that invokes it, for its lane
 /// type `L` and its lane operations, each function with the attributes given (such
 /// as `#[target_feature(enable = "avx")]`).
@@ -62,14 +64,20 @@ macro_rules! four_ray_sphere_test {
             spheres: &[[$crate::maths::Real; 5]],
             rays: [&$crate::geometry::Ray; 4],
         ) -> [Option<($crate::maths::Real, usize)>; 4] {
-            use $crate::geometry::Ray;
             use $crate::maths::Real;
-            let four = |f: fn(&Ray) -> Real| gather(rays.map(f));
-            let origin = [four(|r| r.origin.x), four(|r| r.origin.y), four(|r| r.origin.z)];
+            // Each coordinate gathered lane by lane, with no closure (see `found`).
+            let [r0, r1, r2, r3] = rays;
+            let o = [r0.origin, r1.origin, r2.origin, r3.origin];
+            let d = [r0.direction, r1.direction, r2.direction, r3.direction];
+            let origin = [
+                gather([o[0].x, o[1].x, o[2].x, o[3].x]),
+                gather([o[0].y, o[1].y, o[2].y, o[3].y]),
+                gather([o[0].z, o[1].z, o[2].z, o[3].z]),
+            ];
             let direction = [
-                four(|r| r.direction.x),
-                four(|r| r.direction.y),
-                four(|r| r.direction.z),
+                gather([d[0].x, d[1].x, d[2].x, d[3].x]),
+                gather([d[0].y, d[1].y, d[2].y, d[3].y]),
+                gather([d[0].z, d[1].z, d[2].z, d[3].z]),
             ];
             let mut nearest = splat(Real::INFINITY);
             let mut which = splat(0.0);
@@ -80,12 +88,26 @@ macro_rules! four_ray_sphere_test {
                 nearest = select(closer, t, nearest);
                 which = select(closer, splat(index), which);
             }
-            let (nearest, which) = (lanes(nearest), lanes(which));
-            std::array::from_fn(|k| {
-                (nearest[k] < Real::INFINITY).then(|| (nearest[k], which[k].to_bits() as usize))
-            })
+            let (t, which) = (lanes(nearest), lanes(which));
+            let found = $crate::fast::lanes::found;
+            [
+                found(t[0], which[0]),
+                found(t[1], which[1]),
+                found(t[2], which[2]),
+                found(t[3], which[3]),
+            ]
         }
     };
 }
 
 pub(crate) use four_ray_sphere_test;
+
+/// A lane's answer: the distance `t` and the sphere whose index has the bits of
+/// `which`, or `None` where `t` is infinite (no sphere met). It is called lane by
+/// lane, with no closure: a closure inside a function compiled with AVX is compiled
+/// without it, and called rather than inlined (written with closures, `indirect`
+/// with `--fast` ran 7% more instructions and took 10% longer).
+#[inline(always)]
+pub(crate) fn found(t: Real, which: Real) -> Option<(Real, usize)> {
+    (t < Real::INFINITY).then_some((t, which.to_bits() as usize))
+}
