@@ -5,20 +5,23 @@
 //! Every function here is a safe function compiled with AVX
 //! (`#[target_feature(enable = "avx")]`): inside them the AVX instructions are safe
 //! to call. Calling one from code compiled without AVX is not, and is done in one
-//! place, [`Avx::nearest_of_four`], which holds the proof that the processor has
-//! AVX. That call is this file's only `unsafe` code (the eight-lane tests of the
+//! place, the methods of [`Avx`], which hold the proof that the processor has
+//! AVX. Those calls are this file's only `unsafe` code (the eight-lane tests of the
 //! fast hierarchy, in `avx_lanes`, follow the same rule).
 #![allow(unsafe_code)]
 
 use std::arch::x86_64::{
     __m256d, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_cvtsd_f64, _mm_unpackhi_pd,
     _mm256_add_pd, _mm256_and_pd, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd256_pd128,
-    _mm256_cmp_pd, _mm256_div_pd, _mm256_extractf128_pd, _mm256_mul_pd, _mm256_or_pd,
-    _mm256_set_pd, _mm256_set1_pd, _mm256_sqrt_pd, _mm256_sub_pd, _mm256_xor_pd,
+    _mm256_cmp_pd, _mm256_div_pd, _mm256_extractf128_pd, _mm256_max_pd, _mm256_mul_pd,
+    _mm256_or_pd, _mm256_set_pd, _mm256_set1_pd, _mm256_sqrt_pd, _mm256_sub_pd, _mm256_xor_pd,
 };
 
 use crate::fast::lanes::four_ray_sphere_test;
-use crate::geometry::Ray;
+use crate::fast::shading::{FourVectors, PointLit, SphereHits, four_hit_shading};
+use crate::geometry::{Hit, Ray};
+use crate::lights::PointLight;
+use crate::maths::Colour;
 
 /// Four `f64`, one per lane of an AVX register.
 type L = __m256d;
@@ -43,6 +46,26 @@ impl Avx {
         // SAFETY: an `Avx` is made only by `detect`, where the processor has AVX, so
         // the AVX instructions of `nearest_of_four` can run.
         unsafe { nearest_of_four(spheres, rays) }
+    }
+
+    /// The hit records of [`crate::fast::shading`] (its `sphere_hits`) in AVX
+    /// instructions.
+    pub fn sphere_hits(self, rays: [&Ray; 4], t: [f64; 4], spheres: [&[f64; 5]; 4]) -> SphereHits {
+        // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
+        unsafe { sphere_hits(rays, t, spheres) }
+    }
+
+    /// The direct light of [`crate::fast::shading`] (its `point_light`) in AVX
+    /// instructions.
+    pub fn point_light(self, hits: [&Hit; 4], albedo: [Colour; 4], light: &PointLight) -> PointLit {
+        // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
+        unsafe { point_light(hits, albedo, light) }
+    }
+
+    /// The bounces of [`crate::fast::shading`] (its `bounces`) in AVX instructions.
+    pub fn bounces(self, hits: [&Hit; 4], samples: [[f64; 3]; 4]) -> (FourVectors, FourVectors) {
+        // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
+        unsafe { bounces(hits, samples) }
     }
 }
 
@@ -100,6 +123,16 @@ fn sqrt(a: L) -> L {
 }
 #[target_feature(enable = "avx")]
 #[inline]
+fn abs(a: L) -> L {
+    _mm256_andnot_pd(_mm256_set1_pd(-0.0), a)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn max(a: L, b: L) -> L {
+    _mm256_max_pd(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
 fn or(a: L, b: L) -> L {
     _mm256_or_pd(a, b)
 }
@@ -140,3 +173,4 @@ fn select(mask: L, a: L, b: L) -> L {
 }
 
 four_ray_sphere_test!(#[target_feature(enable = "avx")]);
+four_hit_shading!(#[target_feature(enable = "avx")]);

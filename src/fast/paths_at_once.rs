@@ -22,14 +22,17 @@
 //!
 //! [`SphereLanes::nearest_of_four`]: crate::fast::sphere_lanes::SphereLanes::nearest_of_four
 
-use crate::fast::direct_at_once::Direct;
+use crate::fast::direct_at_once::{Direct, Towards};
+use crate::fast::four_lanes::FourLanes;
 #[cfg(feature = "s5")]
 use crate::fast::meshes_at_once;
+use crate::fast::shading::vector;
 use crate::fast::sphere_lanes::SphereLanes;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
+use crate::lights::Light;
 use crate::materials::Material;
-use crate::maths::{Colour, Real};
+use crate::maths::{Colour, PI, Real, uniform_pair};
 use crate::samplers::adaptive::{Estimate, precise_enough};
 use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
@@ -87,27 +90,20 @@ pub fn row(
 /// Takes each of `paths` (one to four) one hit further: their rays' nearest hits in
 /// one test, then their shadow rays' in another. Where fewer than four paths are
 /// left, or a path has no shadow ray, a lane repeats another ray and its answer is
-/// not used. Each part of the work at a hit is done for every path before the next
-/// part, so that the processor can overlap the paths' square roots and divisions.
+/// not used. The work at the hits (their records, their direct light, their
+/// bounces) is done on the lanes too, each part for every path before the next.
 fn step(spheres: &SphereLanes, paths: &mut [Path]) {
     let last = paths.len() - 1;
     let ray = |k: usize| &paths[k.min(last)].ray;
-    let nearest = spheres.nearest_of_four([ray(0), ray(1), ray(2), ray(3)]);
+    let rays = [ray(0), ray(1), ray(2), ray(3)];
+    let nearest = spheres.nearest_of_four(rays);
     let mut hits = [None; PATHS];
+    sphere_hits(paths[0].tracer.scene, spheres, rays, nearest, &mut hits);
     for ((path, nearest), hit) in paths.iter_mut().zip(nearest).zip(&mut hits) {
-        *hit = path.hit(nearest);
+        path.hit(nearest, hit);
     }
-    for (path, hit) in paths.iter_mut().zip(&hits) {
-        if let Some((hit, albedo)) = hit {
-            let (direct, skipped) = Direct::at(&mut path.tracer, hit, *albedo);
-            (path.direct, path.skipped) = (Some(direct), skipped);
-        }
-    }
-    for (path, hit) in paths.iter_mut().zip(&hits) {
-        if let Some((hit, albedo)) = hit {
-            path.go_on(hit, *albedo);
-        }
-    }
+    light_all(spheres.lanes(), paths, &hits);
+    bounce_all(spheres.lanes(), paths, &hits);
     let mut shadow = [None; PATHS];
     if paths.iter().any(|path| path.shadow_ray().is_some()) {
         let ray = |k: usize| {
@@ -121,6 +117,118 @@ fn step(spheres: &SphereLanes, paths: &mut [Path]) {
     }
 }
 // ANCHOR_END: step
+
+/// A path's hit, facing its ray, and the albedo of the surface hit.
+type Shaded = Option<(Hit, Colour)>;
+
+/// The records of the hits `nearest` (distance and sphere of `scene`) of four
+/// `rays`, their normals facing the rays, worked out on the lanes, with their
+/// albedos, into `hits`, which stay `None` where a ray meets no sphere (a lane
+/// whose ray meets none repeats another lane's sphere).
+fn sphere_hits(
+    scene: &Scene,
+    spheres: &SphereLanes,
+    rays: [&Ray; PATHS],
+    nearest: [Option<(Real, usize)>; PATHS],
+    hits: &mut [Shaded; PATHS],
+) {
+    let Some(&Some(any)) = nearest.iter().find(|n| n.is_some()) else {
+        return;
+    };
+    let [n0, n1, n2, n3] = nearest.map(|n| n.unwrap_or(any));
+    let (t, object) = ([n0.0, n1.0, n2.0, n3.0], [n0.1, n1.1, n2.1, n3.1]);
+    let rows = object.map(|object| spheres.sphere(object));
+    let found = spheres.lanes().sphere_hits(rays, t, rows);
+    for (k, hit) in hits.iter_mut().enumerate() {
+        let sphere = &scene.spheres[object[k]];
+        let Material::Diffuse { albedo } = sphere.material else {
+            unreachable!("paths at once are used only where every object is diffuse")
+        };
+        *hit = nearest[k].is_some().then_some((
+            Hit {
+                t: t[k],
+                point: vector(&found.point, k),
+                normal: vector(&found.normal, k),
+                error: vector(&found.error, k),
+                offset: vector(&found.offset, k),
+                material: sphere.material,
+                emission: sphere.emission,
+                object: object[k],
+                from_outside: found.outside[k].to_bits() != 0,
+            },
+            albedo,
+        ));
+    }
+}
+
+/// The direct light at the paths' hits (`hits[k]` for `paths[k]`): with a point
+/// light and shadows, for the four hits at once on `lanes`, as [`Direct::at`]
+/// does it for one; otherwise by `Direct::at`.
+fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
+    let scene = paths[0].tracer.scene;
+    let (Some(Light::Point(light)), true) = (scene.light, scene.settings.shadows) else {
+        for (path, hit) in paths.iter_mut().zip(hits) {
+            if let Some((hit, albedo)) = hit {
+                let (direct, skipped) = Direct::at(&mut path.tracer, hit, *albedo);
+                (path.direct, path.skipped) = (Some(direct), skipped);
+            }
+        }
+        return;
+    };
+    let Some([h0, h1, h2, h3]) = repeated(hits) else {
+        return;
+    };
+    let four = [&h0.0, &h1.0, &h2.0, &h3.0];
+    let lit = lanes.point_light(four, [h0.1, h1.1, h2.1, h3.1], &light);
+    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
+        if hit.is_some() {
+            path.tracer.rays += 1;
+            let ray = Ray {
+                origin: vector(&lit.origin, k),
+                direction: vector(&lit.direction, k),
+            };
+            let (lit, towards) = (vector(&lit.lit, k), Towards::Point(lit.distance[k]));
+            (path.direct, path.skipped) = (Some(Direct::Shadowed { ray, lit, towards }), None);
+        }
+    }
+}
+
+/// Takes the paths on from their hits (`hits[k]` for `paths[k]`): keeps what each
+/// hit adds, and makes the next rays of those that bounce, the four at once on
+/// `lanes`, each from its own path's random numbers.
+fn bounce_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
+    let mut samples = [None; PATHS];
+    let mut bouncing = [None; PATHS];
+    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
+        if let Some((hit, albedo)) = hit
+            && path.go_on(hit, *albedo)
+        {
+            (samples[k], bouncing[k]) = (Some(path.bounce_sample()), Some(hit));
+        }
+    }
+    let Some([h0, h1, h2, h3]) = repeated(&bouncing) else {
+        return;
+    };
+    let any = samples.iter().flatten().next().copied().unwrap_or_default();
+    let (origin, direction) =
+        lanes.bounces([*h0, *h1, *h2, *h3], samples.map(|s| s.unwrap_or(any)));
+    for (k, path) in paths.iter_mut().enumerate() {
+        if samples[k].is_some() {
+            path.ray = Ray {
+                origin: vector(&origin, k),
+                direction: vector(&direction, k),
+            };
+        }
+    }
+}
+
+/// The four entries of `hits`, a lane without one repeating the first that has
+/// one; `None` if none has.
+fn repeated<T>(hits: &[Option<T>; PATHS]) -> Option<[&T; PATHS]> {
+    let first = hits.iter().flatten().next()?;
+    let lane = |k: usize| hits[k].as_ref().unwrap_or(first);
+    Some([lane(0), lane(1), lane(2), lane(3)])
+}
 
 /// What a diffuse hit adds to its path's radiance, once the radiance arriving from
 /// the rest of the path, `rest`, is known.
@@ -229,35 +337,25 @@ impl<'s> Path<'s> {
             || precise_enough(&self.tracer.scene.settings, &self.estimate, self.taken)
     }
 
-    /// The hit `nearest` (the distance and sphere that the ray meets first), facing
-    /// the ray, and its albedo; `None` where the ray meets nothing, which ends the
-    /// path.
-    fn hit(&mut self, nearest: Option<(Real, usize)>) -> Option<(Hit, Colour)> {
+    /// Counts the ray, whose nearest sphere is `nearest` and whose hit on it is
+    /// `hit`: from session 5 a mesh's hit replaces it if closer. `None` where the
+    /// ray meets nothing, which ends the path.
+    #[cfg_attr(not(feature = "s5"), allow(unused_variables))]
+    fn hit(&mut self, nearest: Option<(Real, usize)>, hit: &mut Shaded) {
         self.tracer.rays += 1;
-        let Some(hit) = self.meet(nearest) else {
-            self.ended = true;
-            return None;
-        };
-        let Material::Diffuse { albedo } = hit.material else {
-            unreachable!("paths at once are used only where every object is diffuse")
-        };
-        Some((hit.facing_the_ray(), albedo))
-    }
-
-    /// The hit record of the nearest object the ray meets, `nearest` being its
-    /// nearest sphere: from session 5, a mesh's if one is closer.
-    fn meet(&self, nearest: Option<(Real, usize)>) -> Option<Hit> {
-        let scene = self.tracer.scene;
         #[cfg(feature = "s5")]
-        if let Some(hit) = meshes_at_once::nearer_mesh(scene, &self.ray, nearest) {
-            return Some(hit);
+        if let Some(on_mesh) = meshes_at_once::nearer_mesh(self.tracer.scene, &self.ray, nearest) {
+            let Material::Diffuse { albedo } = on_mesh.material else {
+                unreachable!("paths at once are used only where every object is diffuse")
+            };
+            *hit = Some((on_mesh.facing_the_ray(), albedo));
         }
-        nearest.map(|(t, object)| scene.spheres[object].hit_at(&self.ray, t, object))
+        self.ended = hit.is_none();
     }
 
     /// Goes on from `hit`, of a surface of `albedo`, once its direct light is
-    /// drawn: keeps what the hit adds and makes the next ray, if the path bounces.
-    fn go_on(&mut self, hit: &Hit, albedo: Colour) {
+    /// drawn: keeps what the hit adds; returns whether the path bounces.
+    fn go_on(&mut self, hit: &Hit, albedo: Colour) -> bool {
         let counted = self.levels.is_empty() || self.skipped != Some(hit.object);
         let next = self.next();
         self.levels.push(Level {
@@ -267,10 +365,15 @@ impl<'s> Path<'s> {
             next,
         });
         self.ended = matches!(next, Next::NoIndirect | Next::Stopped);
-        if !self.ended {
-            let direction = self.tracer.cosine_direction(hit);
-            self.ray = hit.spawn(direction);
-        }
+        !self.ended
+    }
+
+    /// The random numbers of a bounce, drawn as `Tracer::cosine_direction` draws
+    /// them, and the cosine and sine of its angle: `[cos phi, sin phi, u2]`.
+    fn bounce_sample(&mut self) -> [Real; 3] {
+        let (u1, u2) = uniform_pair(&mut self.tracer.rng);
+        let phi = 2.0 * PI * u1;
+        [phi.cos(), phi.sin(), u2]
     }
 
     /// The shadow ray of the last hit, if it has one.

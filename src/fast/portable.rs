@@ -1,8 +1,9 @@
-//! The four-ray sphere test on any processor: the lanes of the `wide` crate, which
-//! uses the SIMD instructions the build targets (two `f64` per instruction on any
-//! x86-64) and plain arithmetic elsewhere.
+//! The four-ray sphere test and the four hits' shading on any processor: the lanes
+//! of the `wide` crate, which uses the SIMD instructions the build targets (two
+//! `f64` per instruction on any x86-64) and plain arithmetic elsewhere.
 
 use crate::fast::lanes::four_ray_sphere_test;
+use crate::fast::shading::four_hit_shading;
 use crate::maths::Real;
 
 /// Four [`Real`] numbers, one per lane.
@@ -57,6 +58,16 @@ fn neg(a: L) -> L {
 fn sqrt(a: L) -> L {
     a.sqrt()
 }
+/// `|a|`, lane by lane (the sign bit cleared).
+#[inline]
+fn abs(a: L) -> L {
+    a.abs()
+}
+/// The larger of `a` and `b`, lane by lane; `b` where `a` is NaN.
+#[inline]
+fn max(a: L, b: L) -> L {
+    a.max(b)
+}
 /// The bits of `a` or those of `b`.
 #[inline]
 fn or(a: L, b: L) -> L {
@@ -99,3 +110,4 @@ fn select(mask: L, a: L, b: L) -> L {
 }
 
 four_ray_sphere_test!();
+four_hit_shading!();

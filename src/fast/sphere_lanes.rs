@@ -2,8 +2,8 @@
 //! four rays: what [`Scene::nearest_sphere`](crate::scene::Scene::nearest_sphere)
 //! finds for one ray, for four paths followed at once.
 
-#[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
-use crate::fast::avx::Avx;
+use crate::fast::four_lanes::FourLanes;
+#[cfg(test)]
 use crate::fast::portable;
 use crate::geometry::{Ray, Sphere};
 use crate::maths::Real;
@@ -13,9 +13,8 @@ use crate::maths::Real;
 #[derive(Clone, Debug, PartialEq)]
 pub struct SphereLanes {
     spheres: Vec<[Real; 5]>,
-    /// AVX, where the processor has it (checked once, when the lanes are made).
-    #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
-    avx: Option<Avx>,
+    /// The fastest lanes of the processor (asked once, when the lanes are made).
+    lanes: FourLanes,
 }
 
 impl SphereLanes {
@@ -27,20 +26,25 @@ impl SphereLanes {
         };
         SphereLanes {
             spheres: spheres.iter().enumerate().map(row).collect(),
-            #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
-            avx: Avx::detect(),
+            lanes: FourLanes::fastest(),
         }
+    }
+
+    /// The lanes the tests run on, for the shading of the same paths.
+    pub fn lanes(&self) -> FourLanes {
+        self.lanes
+    }
+
+    /// Sphere `index`'s centre, radius and index, as the lanes hold them.
+    pub fn sphere(&self, index: usize) -> &[Real; 5] {
+        &self.spheres[index]
     }
 
     /// For each of four rays, the distance to the nearest sphere it hits and that
     /// sphere's index, the first sphere on a tie: the course's loop for four rays at
     /// once, to the last bit, with AVX where the processor has it.
     pub fn nearest_of_four(&self, rays: [&Ray; 4]) -> [Option<(Real, usize)>; 4] {
-        #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
-        if let Some(avx) = self.avx {
-            return avx.nearest_of_four(&self.spheres, rays);
-        }
-        portable::nearest_of_four(&self.spheres, rays)
+        self.lanes.nearest_of_four(&self.spheres, rays)
     }
 }
 
@@ -48,6 +52,8 @@ impl SphereLanes {
 mod tests {
     use super::*;
     use crate::Scene;
+    #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+    use crate::fast::avx::Avx;
     use crate::materials::Material;
     use crate::maths::{Colour, Vec3, pixel_rng, uniform};
 

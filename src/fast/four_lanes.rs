@@ -1,0 +1,214 @@
+//! Which lanes of four `Real` numbers the paths followed at once run on: AVX's,
+//! where the processor has them (asked once, at run time), else the portable ones.
+//! Both compute every number to the last bit as the course's functions do; this type
+//! only chooses, and calls the tests and the shading written once for any lanes
+//! ([`lanes`](super::lanes), [`shading`](super::shading)).
+
+#[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+use crate::fast::avx::Avx;
+use crate::fast::portable;
+use crate::fast::shading::{FourVectors, PointLit, SphereHits};
+use crate::geometry::{Hit, Ray};
+use crate::lights::PointLight;
+use crate::maths::{Colour, Real};
+
+/// The lanes that the four-ray tests and the four hits' shading run on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FourLanes {
+    /// AVX: four `f64` per instruction, on the x86-64 processors that have it.
+    #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+    Avx(Avx),
+    /// The `wide` crate's lanes, on any processor.
+    Portable,
+}
+
+impl FourLanes {
+    /// The fastest lanes this processor has.
+    pub fn fastest() -> FourLanes {
+        #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+        if let Some(avx) = Avx::detect() {
+            return FourLanes::Avx(avx);
+        }
+        FourLanes::Portable
+    }
+
+    /// For each of four `rays`, the nearest of `spheres` (centre, radius and index
+    /// as the bits of a `Real`) and its distance: the course's loop, on the lanes.
+    pub fn nearest_of_four(
+        self,
+        spheres: &[[Real; 5]],
+        rays: [&Ray; 4],
+    ) -> [Option<(Real, usize)>; 4] {
+        match self {
+            #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+            FourLanes::Avx(avx) => avx.nearest_of_four(spheres, rays),
+            FourLanes::Portable => portable::nearest_of_four(spheres, rays),
+        }
+    }
+
+    /// The hit records of four rays on their spheres, ray `k` meeting `spheres[k]`
+    /// at `t[k]`, their normals facing the rays: `Sphere::hit_at` and
+    /// `Hit::facing_the_ray`, on the lanes.
+    pub fn sphere_hits(
+        self,
+        rays: [&Ray; 4],
+        t: [Real; 4],
+        spheres: [&[Real; 5]; 4],
+    ) -> SphereHits {
+        match self {
+            #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+            FourLanes::Avx(avx) => avx.sphere_hits(rays, t, spheres),
+            FourLanes::Portable => portable::sphere_hits(rays, t, spheres),
+        }
+    }
+
+    /// At four hits of surfaces of `albedo`, the light from `light` if nothing is
+    /// in the way and the shadow rays: `PointLight::lambert` and
+    /// `Hit::spawn_towards`, on the lanes.
+    pub fn point_light(self, hits: [&Hit; 4], albedo: [Colour; 4], light: &PointLight) -> PointLit {
+        match self {
+            #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+            FourLanes::Avx(avx) => avx.point_light(hits, albedo, light),
+            FourLanes::Portable => portable::point_light(hits, albedo, light),
+        }
+    }
+
+    /// The origins and directions of the cosine-weighted bounces of four hits from
+    /// their samples `[cos phi, sin phi, u2]`: `Tracer::cosine_direction` after its
+    /// random numbers, and `Hit::spawn`, on the lanes.
+    pub fn bounces(self, hits: [&Hit; 4], samples: [[Real; 3]; 4]) -> (FourVectors, FourVectors) {
+        match self {
+            #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+            FourLanes::Avx(avx) => avx.bounces(hits, samples),
+            FourLanes::Portable => portable::bounces(hits, samples),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Scene;
+    use crate::fast::shading::vector;
+    use crate::fast::sphere_lanes::SphereLanes;
+    use crate::geometry::Sphere;
+    use crate::materials::Material;
+    use crate::maths::frame::Frame;
+    use crate::maths::sampling::sample_cosine_hemisphere;
+    use crate::maths::{PI, PixelRng, Vec3, pixel_rng, uniform};
+
+    /// The room of the sphere stages with a ball in it, and a ball the rays start
+    /// inside.
+    fn scene() -> Scene {
+        let sphere = |centre: Vec3, radius: Real| Sphere {
+            centre,
+            radius,
+            material: Material::Diffuse {
+                albedo: Colour::ONE,
+            },
+            emission: Colour::ZERO,
+        };
+        let wall = |axis: Vec3, radius: Real| sphere(1000.0 * axis, radius);
+        let spheres = vec![
+            sphere(Vec3::ZERO, 10.0),
+            sphere(Vec3::new(20.0, -5.0, 3.0), 30.0),
+            wall(-Vec3::Y, 990.0),
+            wall(Vec3::Y, 940.0),
+            wall(-Vec3::X, 940.0),
+            wall(Vec3::X, 940.0),
+            wall(-Vec3::Z, 940.0),
+            wall(Vec3::Z, 940.0),
+        ];
+        Scene::new(Default::default(), spheres, None, Default::default())
+    }
+
+    /// A random point of the room.
+    fn point(rng: &mut PixelRng) -> Vec3 {
+        let mut u = || 110.0 * uniform(rng) - 55.0;
+        Vec3::new(u(), u(), u())
+    }
+
+    /// 4,000 rays between random points of the room, in fours, with their nearest
+    /// spheres (every ray meets a wall).
+    fn fours(scene: &Scene) -> Vec<([Ray; 4], [(Real, usize); 4])> {
+        let mut rng = pixel_rng(12, 0);
+        (0..1000)
+            .map(|_| {
+                let rays: [Ray; 4] = std::array::from_fn(|_| {
+                    let origin = point(&mut rng);
+                    let direction = (point(&mut rng) - origin).normalize();
+                    Ray { origin, direction }
+                });
+                let nearest = rays.map(|ray| scene.nearest_sphere(&ray).expect("a wall"));
+                (rays, nearest)
+            })
+            .collect()
+    }
+
+    /// The course's hit records of four rays, facing the rays.
+    fn course_hits(scene: &Scene, rays: &[Ray; 4], nearest: [(Real, usize); 4]) -> [Hit; 4] {
+        std::array::from_fn(|k| {
+            let (t, object) = nearest[k];
+            scene.spheres[object]
+                .hit_at(&rays[k], t, object)
+                .facing_the_ray()
+        })
+    }
+
+    /// Asserts that `lanes` give every number of the course's hit records, direct
+    /// light and bounces to the last bit.
+    fn agrees_with_the_course(lanes: FourLanes) {
+        let scene = scene();
+        let rows = SphereLanes::new(&scene.spheres);
+        let light = PointLight {
+            position: Vec3::new(-10.0, 20.0, 40.0),
+            intensity: 2e10,
+        };
+        let mut rng = pixel_rng(13, 0);
+        for (rays, nearest) in fours(&scene) {
+            let expected = course_hits(&scene, &rays, nearest);
+            let found = lanes.sphere_hits(
+                [&rays[0], &rays[1], &rays[2], &rays[3]],
+                nearest.map(|n| n.0),
+                nearest.map(|n| rows.sphere(n.1)),
+            );
+            for (k, hit) in expected.iter().enumerate() {
+                assert_eq!(vector(&found.point, k), hit.point);
+                assert_eq!(vector(&found.normal, k), hit.normal);
+                assert_eq!(vector(&found.error, k), hit.error);
+                assert_eq!(vector(&found.offset, k), hit.offset);
+                assert_eq!(found.outside[k].to_bits() != 0, hit.from_outside);
+            }
+            let hits = [&expected[0], &expected[1], &expected[2], &expected[3]];
+            let albedo = std::array::from_fn(|_| Vec3::new(uniform(&mut rng), 0.5, 1.0));
+            let lit = lanes.point_light(hits, albedo, &light);
+            let samples: [[Real; 2]; 4] =
+                std::array::from_fn(|_| [uniform(&mut rng), uniform(&mut rng)]);
+            let phi = samples.map(|[u1, _]| 2.0 * PI * u1);
+            let with_angles = std::array::from_fn(|k| [phi[k].cos(), phi[k].sin(), samples[k][1]]);
+            let (origin, direction) = lanes.bounces(hits, with_angles);
+            for (k, hit) in expected.iter().enumerate() {
+                let (shadow, distance) = hit.spawn_towards(light.position);
+                let lambert = light.lambert(hit.point, hit.normal, albedo[k]);
+                assert_eq!(vector(&lit.lit, k), lambert);
+                assert_eq!(vector(&lit.origin, k), shadow.origin);
+                assert_eq!(vector(&lit.direction, k), shadow.direction);
+                assert_eq!(lit.distance[k], distance);
+                let [u1, u2] = samples[k];
+                let bounce = Frame::new(hit.normal).to_world(sample_cosine_hemisphere(u1, u2));
+                assert_eq!(vector(&direction, k), bounce);
+                assert_eq!(vector(&origin, k), hit.spawn(bounce).origin);
+            }
+        }
+    }
+
+    #[test]
+    fn the_portable_lanes_shade_as_the_course_to_the_last_bit() {
+        agrees_with_the_course(FourLanes::Portable);
+    }
+
+    #[test]
+    fn the_fastest_lanes_shade_as_the_course_to_the_last_bit() {
+        agrees_with_the_course(FourLanes::fastest());
+    }
+}
