@@ -18,10 +18,10 @@ use std::arch::x86_64::{
 };
 
 use crate::fast::lanes::four_ray_sphere_test;
-use crate::fast::shading::{FourVectors, PointLit, SphereHits, four_hit_shading};
+use crate::fast::shading::{FourVectors, LightSamples, PointLit, SphereHits, four_hit_shading};
 use crate::geometry::{Hit, Ray};
 use crate::lights::PointLight;
-use crate::maths::Colour;
+use crate::maths::{Colour, Vec3};
 
 /// Four `f64`, one per lane of an AVX register.
 type L = __m256d;
@@ -60,6 +60,19 @@ impl Avx {
     pub fn point_light(self, hits: [&Hit; 4], albedo: [Colour; 4], light: &PointLight) -> PointLit {
         // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
         unsafe { point_light(hits, albedo, light) }
+    }
+
+    /// The light samples of [`crate::fast::shading`] (its `sphere_light`) in AVX
+    /// instructions.
+    pub fn sphere_light(
+        self,
+        hits: [&Hit; 4],
+        albedo: [Colour; 4],
+        samples: [[f64; 3]; 4],
+        light: (Vec3, f64, Colour),
+    ) -> LightSamples {
+        // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
+        unsafe { sphere_light(hits, albedo, samples, light) }
     }
 
     /// The bounces of [`crate::fast::shading`] (its `bounces`) in AVX instructions.

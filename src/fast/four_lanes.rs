@@ -7,10 +7,10 @@
 #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
 use crate::fast::avx::Avx;
 use crate::fast::portable;
-use crate::fast::shading::{FourVectors, PointLit, SphereHits};
+use crate::fast::shading::{FourVectors, LightSamples, PointLit, SphereHits};
 use crate::geometry::{Hit, Ray};
 use crate::lights::PointLight;
-use crate::maths::{Colour, Real};
+use crate::maths::{Colour, Real, Vec3};
 
 /// The lanes that the four-ray tests and the four hits' shading run on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -73,6 +73,24 @@ impl FourLanes {
         }
     }
 
+    /// At four hits of surfaces of `albedo`, from each hit's random numbers `[u1,
+    /// cos phi, sin phi]` (`phi = 2 pi u2`), a direction towards the sphere light of
+    /// centre, radius and emission `light`, its ray and the light it brings:
+    /// `Tracer::light_sample` after its random numbers, on the lanes.
+    pub fn sphere_light(
+        self,
+        hits: [&Hit; 4],
+        albedo: [Colour; 4],
+        samples: [[Real; 3]; 4],
+        light: (Vec3, Real, Colour),
+    ) -> LightSamples {
+        match self {
+            #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+            FourLanes::Avx(avx) => avx.sphere_light(hits, albedo, samples, light),
+            FourLanes::Portable => portable::sphere_light(hits, albedo, samples, light),
+        }
+    }
+
     /// The origins and directions of the cosine-weighted bounces of four hits from
     /// their samples `[cos phi, sin phi, u2]`: `Tracer::cosine_direction` after its
     /// random numbers, and `Hit::spawn`, on the lanes.
@@ -128,9 +146,12 @@ mod tests {
         Vec3::new(u(), u(), u())
     }
 
+    /// Four rays and their nearest spheres' distances and indices.
+    type Four = ([Ray; 4], [(Real, usize); 4]);
+
     /// 4,000 rays between random points of the room, in fours, with their nearest
     /// spheres (every ray meets a wall).
-    fn fours(scene: &Scene) -> Vec<([Ray; 4], [(Real, usize); 4])> {
+    fn fours(scene: &Scene) -> Vec<Four> {
         let mut rng = pixel_rng(12, 0);
         (0..1000)
             .map(|_| {
@@ -210,5 +231,57 @@ mod tests {
     #[test]
     fn the_fastest_lanes_shade_as_the_course_to_the_last_bit() {
         agrees_with_the_course(FourLanes::fastest());
+    }
+
+    /// Asserts that `lanes` draw the course's light samples towards a sphere light
+    /// to the last bit, rays and their absence included, from points inside the
+    /// light too.
+    #[cfg(feature = "s4")]
+    fn sample_the_light_as_the_course(lanes: FourLanes) {
+        use crate::integrator::Tracer;
+        use crate::lights::SphereLight;
+        use crate::maths::uniform_pair;
+        let scene = scene();
+        // Around the second ball, so that the rays from its surface start inside.
+        let light = SphereLight::new(Vec3::new(20.0, -5.0, 3.0), 35.0, 2e10, 0);
+        let mut tracer = Tracer::new(&scene);
+        let (mut kept, mut rays, mut inside) = (0, 0, 0);
+        for (rays_of_four, nearest) in fours(&scene) {
+            let hits = course_hits(&scene, &rays_of_four, nearest);
+            let albedo = [Vec3::new(1.0, 0.5, 0.25); 4];
+            let mut samples = [[0.0; 3]; 4];
+            let mut expected = Vec::new();
+            for (hit, sample) in hits.iter().zip(&mut samples) {
+                let (u1, u2) = uniform_pair(&mut tracer.rng.clone());
+                let phi = 2.0 * PI * u2;
+                *sample = [u1, phi.cos(), phi.sin()];
+                expected.push(tracer.light_sample(&light, hit, albedo[0]));
+                inside += usize::from(light.cone(hit.point).is_none());
+            }
+            let shape = (light.centre, light.radius, light.emission);
+            let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
+            let found = lanes.sphere_light(four, albedo, samples, shape);
+            for (k, expected) in expected.iter().enumerate() {
+                let ray = (found.kept[k].to_bits() != 0).then(|| {
+                    let (origin, direction) =
+                        (vector(&found.origin, k), vector(&found.direction, k));
+                    (Ray { origin, direction }, vector(&found.lit, k))
+                });
+                assert_eq!(&ray, expected);
+                kept += usize::from(ray.is_some());
+            }
+            rays += 4;
+        }
+        // Many directions lie below their surfaces, and some points are inside the
+        // light: lanes with and without a ray are tested.
+        assert!(kept > rays / 4 && kept < rays * 3 / 4, "{kept} of {rays}");
+        assert!(inside > 100, "{inside} points inside the light");
+    }
+
+    #[cfg(feature = "s4")]
+    #[test]
+    fn both_lanes_sample_the_light_as_the_course_to_the_last_bit() {
+        sample_the_light_as_the_course(FourLanes::Portable);
+        sample_the_light_as_the_course(FourLanes::fastest());
     }
 }

@@ -30,7 +30,9 @@ use crate::fast::shading::vector;
 use crate::fast::sphere_lanes::SphereLanes;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
-use crate::lights::Light;
+#[cfg(feature = "s4")]
+use crate::lights::SphereLight;
+use crate::lights::{Light, PointLight};
 use crate::materials::Material;
 use crate::maths::{Colour, PI, Real, uniform_pair};
 use crate::samplers::adaptive::{Estimate, precise_enough};
@@ -161,25 +163,44 @@ fn sphere_hits(
     }
 }
 
-/// The direct light at the paths' hits (`hits[k]` for `paths[k]`): with a point
-/// light and shadows, for the four hits at once on `lanes`, as [`Direct::at`]
-/// does it for one; otherwise by `Direct::at`.
+/// The direct light at the paths' hits (`hits[k]` for `paths[k]`): for the four
+/// hits at once on `lanes` where the light is a point light with shadows or
+/// (session 4) a sampled sphere light, as [`Direct::at`] does it for one;
+/// otherwise by `Direct::at`.
 fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
     let scene = paths[0].tracer.scene;
-    let (Some(Light::Point(light)), true) = (scene.light, scene.settings.shadows) else {
-        for (path, hit) in paths.iter_mut().zip(hits) {
-            if let Some((hit, albedo)) = hit {
-                let (direct, skipped) = Direct::at(&mut path.tracer, hit, *albedo);
-                (path.direct, path.skipped) = (Some(direct), skipped);
+    match scene.light {
+        Some(Light::Point(light)) if scene.settings.shadows => {
+            point_light_all(lanes, paths, hits, &light);
+        }
+        #[cfg(feature = "s4")]
+        Some(Light::Sphere(light)) if scene.settings.light_sampling => {
+            sphere_light_all(lanes, paths, hits, &light);
+        }
+        _ => {
+            for (path, hit) in paths.iter_mut().zip(hits) {
+                if let Some((hit, albedo)) = hit {
+                    let (direct, skipped) = Direct::at(&mut path.tracer, hit, *albedo);
+                    (path.direct, path.skipped) = (Some(direct), skipped);
+                }
             }
         }
-        return;
-    };
+    }
+}
+
+/// The light from the point light `light` at the paths' hits, and their shadow
+/// rays, on `lanes`: `Direct::at` with a point light and shadows.
+fn point_light_all(
+    lanes: FourLanes,
+    paths: &mut [Path],
+    hits: &[Shaded; PATHS],
+    light: &PointLight,
+) {
     let Some([h0, h1, h2, h3]) = repeated(hits) else {
         return;
     };
     let four = [&h0.0, &h1.0, &h2.0, &h3.0];
-    let lit = lanes.point_light(four, [h0.1, h1.1, h2.1, h3.1], &light);
+    let lit = lanes.point_light(four, [h0.1, h1.1, h2.1, h3.1], light);
     for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
         if hit.is_some() {
             path.tracer.rays += 1;
@@ -190,6 +211,48 @@ fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
             let (lit, towards) = (vector(&lit.lit, k), Towards::Point(lit.distance[k]));
             (path.direct, path.skipped) = (Some(Direct::Shadowed { ray, lit, towards }), None);
         }
+    }
+}
+
+/// One direction sampled towards the sphere light `light` from each of the paths'
+/// hits, its ray and the light it brings, on `lanes`: `Direct::at` with a sampled
+/// sphere light (session 4), each path drawing its own random numbers first.
+#[cfg(feature = "s4")]
+fn sphere_light_all(
+    lanes: FourLanes,
+    paths: &mut [Path],
+    hits: &[Shaded; PATHS],
+    light: &SphereLight,
+) {
+    let mut samples = [[0.0; 3]; PATHS];
+    for ((path, hit), sample) in paths.iter_mut().zip(hits).zip(&mut samples) {
+        if hit.is_some() {
+            let (u1, u2) = uniform_pair(&mut path.tracer.rng);
+            let phi = 2.0 * PI * u2;
+            *sample = [u1, phi.cos(), phi.sin()];
+        }
+    }
+    let Some([h0, h1, h2, h3]) = repeated(hits) else {
+        return;
+    };
+    let (four, albedo) = ([&h0.0, &h1.0, &h2.0, &h3.0], [h0.1, h1.1, h2.1, h3.1]);
+    let shape = (light.centre, light.radius, light.emission);
+    let found = lanes.sphere_light(four, albedo, samples, shape);
+    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
+        if hit.is_none() {
+            continue;
+        }
+        let mut direct = Direct::Known(Colour::ZERO);
+        if found.kept[k].to_bits() != 0 {
+            path.tracer.rays += 1;
+            let ray = Ray {
+                origin: vector(&found.origin, k),
+                direction: vector(&found.direction, k),
+            };
+            let (lit, towards) = (vector(&found.lit, k), Towards::Body(light.object));
+            direct = Direct::Shadowed { ray, lit, towards };
+        }
+        (path.direct, path.skipped) = (Some(direct), path.tracer.sampled_light());
     }
 }
 

@@ -4,11 +4,11 @@
 //!
 //! Every step is the course function's, in its order, so every number is the same
 //! to the last bit: [`Sphere::hit_at`], [`Hit::facing_the_ray`],
-//! [`PointLight::lambert`], [`Hit::spawn_towards`], [`sample_cosine_hemisphere`],
-//! [`Frame::new`] and [`Frame::to_world`], [`Hit::spawn`]. Two steps stay one number
-//! at a time: the cosine and sine of the bounce's angle (the C library's, which has
-//! no lane version that rounds as it does) and the last step of a new ray's origin,
-//! [`one_ulp_towards`].
+//! [`PointLight::lambert`], [`Hit::spawn_towards`], `Tracer::light_sample` (session
+//! 4), [`sample_cosine_hemisphere`], [`Frame::new`] and [`Frame::to_world`],
+//! [`Hit::spawn`]. Two steps stay one number at a time: the cosine and sine of an
+//! angle (the C library's, which has no lane version that rounds as it does) and the
+//! last step of a new ray's origin, [`one_ulp_towards`].
 //!
 //! [`Sphere::hit_at`]: crate::geometry::Sphere::hit_at
 //! [`Hit::facing_the_ray`]: crate::geometry::Hit::facing_the_ray
@@ -62,7 +62,22 @@ pub struct PointLit {
     pub distance: [Real; 4],
 }
 
-/// Defines `sphere_hits`, `point_light` and `bounces` in the module that invokes it,
+/// One direction sampled towards a sphere light from each of four hits: what
+/// `Tracer::light_sample` gives (from session 4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightSamples {
+    /// The light each direction brings if nothing is in the way.
+    pub lit: FourVectors,
+    /// The rays' origins.
+    pub origin: FourVectors,
+    /// The rays' directions.
+    pub direction: FourVectors,
+    /// Per hit, not zero where it has a ray: outside the light, the direction above
+    /// the surface.
+    pub kept: [Real; 4],
+}
+
+/// Defines `sphere_hits`, `point_light`, `sphere_light` and `bounces` in the module that invokes it,
 /// for its lane type `L` and its lane operations (those of the sphere test, and
 /// `abs`, `max`), each function with the attributes given. No closure is used: one
 /// inside a function compiled with AVX is compiled without it, and called.
@@ -112,6 +127,25 @@ macro_rules! four_hit_shading {
         #[inline]
         fn minus(a: [L; 3], b: [L; 3]) -> [L; 3] {
             [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
+        }
+
+        /// `Frame::new(n).to_world(local)`: the local coordinates `local` in the
+        /// frame around the unit vectors `n`.
+        $(#[$attribute])*
+        #[inline]
+        fn to_world(n: [L; 3], local: [L; 3]) -> [L; 3] {
+            let [nx, ny, nz] = n;
+            let sign = or(and(nz, splat(-0.0)), splat(1.0));
+            let a = div(splat(-1.0), add(sign, nz));
+            let b = mul(mul(nx, ny), a);
+            let t1 = [
+                add(splat(1.0), mul(mul(mul(sign, nx), nx), a)),
+                mul(sign, b),
+                mul(neg(sign), nx),
+            ];
+            let t2 = [b, add(sign, mul(mul(ny, ny), a)), neg(ny)];
+            let [x, y, z] = local;
+            plus(plus(scale(x, t1), scale(y, t2)), scale(z, n))
         }
 
         /// The origins of rays leaving four hits (`point`, `offset`) along
@@ -220,6 +254,65 @@ macro_rules! four_hit_shading {
             }
         }
 
+        /// `Tracer::light_sample` at four hits (normals facing their rays) of
+        /// surfaces of `albedo`, from each hit's `[u1, cos phi, sin phi]`, towards
+        /// the sphere light of `centre`, `radius` and `emission`: the cone under
+        /// which the light is seen (`SphereLight::cone`), its frame, a direction in
+        /// it (`Cone::sample`), its density, and the ray.
+        $(#[$attribute])*
+        pub(crate) fn sphere_light(
+            hits: [&$crate::geometry::Hit; 4],
+            albedo: [$crate::maths::Colour; 4],
+            samples: [[$crate::maths::Real; 3]; 4],
+            light: ($crate::maths::Vec3, $crate::maths::Real, $crate::maths::Colour),
+        ) -> $crate::fast::shading::LightSamples {
+            use $crate::maths::PI;
+            let (centre, radius, emission) = light;
+            let [h0, h1, h2, h3] = hits;
+            let point = gather3([h0.point, h1.point, h2.point, h3.point]);
+            let to_centre = minus([splat(centre.x), splat(centre.y), splat(centre.z)], point);
+            let r2 = dot(to_centre, to_centre);
+            let sin2 = div(splat(radius * radius), r2);
+            let outside = lt(sin2, splat(1.0));
+            let cos_max = sqrt(sub(splat(1.0), sin2));
+            let one_minus_cos_max = div(sin2, add(splat(1.0), cos_max));
+            let [cx, cy, cz] = to_centre;
+            let inverse = div(splat(1.0), sqrt(r2));
+            let axis = [mul(cx, inverse), mul(cy, inverse), mul(cz, inverse)];
+            let [s0, s1, s2, s3] = samples;
+            let u1 = gather([s0[0], s1[0], s2[0], s3[0]]);
+            let cos_phi = gather([s0[1], s1[1], s2[1], s3[1]]);
+            let sin_phi = gather([s0[2], s1[2], s2[2], s3[2]]);
+            let one_minus_cos = mul(u1, one_minus_cos_max);
+            let squared = mul(one_minus_cos, sub(splat(2.0), one_minus_cos));
+            let sin_theta = sqrt(max(squared, splat(0.0)));
+            let local = [
+                mul(cos_phi, sin_theta),
+                mul(sin_phi, sin_theta),
+                sub(splat(1.0), one_minus_cos),
+            ];
+            let direction = to_world(axis, local);
+            let inside_cone = ge(local[2], cos_max);
+            let pdf = and(inside_cone, div(splat(1.0), mul(splat(2.0 * PI), one_minus_cos_max)));
+            let normal = gather3([h0.normal, h1.normal, h2.normal, h3.normal]);
+            let cos = dot(direction, normal);
+            let kept = and(outside, gt(cos, splat(0.0)));
+            let [ax, ay, az] = gather3(albedo);
+            let pi = splat(PI);
+            let lit = [
+                div(mul(div(mul(splat(emission.x), ax), pi), cos), pdf),
+                div(mul(div(mul(splat(emission.y), ay), pi), cos), pdf),
+                div(mul(div(mul(splat(emission.z), az), pi), cos), pdf),
+            ];
+            let offset = gather3([h0.offset, h1.offset, h2.offset, h3.offset]);
+            $crate::fast::shading::LightSamples {
+                lit: scatter3(lit),
+                origin: spawn(point, offset, direction),
+                direction: scatter3(direction),
+                kept: lanes(kept),
+            }
+        }
+
         /// The cosine-weighted bounces of four hits (normals facing their rays):
         /// `sample_cosine_hemisphere` from each sample's `[cos phi, sin phi, u2]`,
         /// turned into the frame of the normal and spawned from the hit; the rays'
@@ -234,21 +327,9 @@ macro_rules! four_hit_shading {
             let sin_phi = gather([s0[1], s1[1], s2[1], s3[1]]);
             let u2 = gather([s0[2], s1[2], s2[2], s3[2]]);
             let r = sqrt(sub(splat(1.0), u2));
-            let [h0, h1, h2, h3] = hits;
-            let n = gather3([h0.normal, h1.normal, h2.normal, h3.normal]);
-            let [nx, ny, nz] = n;
-            let sign = or(and(nz, splat(-0.0)), splat(1.0));
-            let a = div(splat(-1.0), add(sign, nz));
-            let b = mul(mul(nx, ny), a);
-            let t1 = [
-                add(splat(1.0), mul(mul(mul(sign, nx), nx), a)),
-                mul(sign, b),
-                mul(neg(sign), nx),
-            ];
-            let t2 = [b, add(sign, mul(mul(ny, ny), a)), neg(ny)];
             let local = [mul(cos_phi, r), mul(sin_phi, r), sqrt(u2)];
-            let [x, y, z] = local;
-            let direction = plus(plus(scale(x, t1), scale(y, t2)), scale(z, n));
+            let [h0, h1, h2, h3] = hits;
+            let direction = to_world(gather3([h0.normal, h1.normal, h2.normal, h3.normal]), local);
             let point = gather3([h0.point, h1.point, h2.point, h3.point]);
             let offset = gather3([h0.offset, h1.offset, h2.offset, h3.offset]);
             (spawn(point, offset, direction), scatter3(direction))
