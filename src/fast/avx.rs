@@ -11,9 +11,11 @@
 #![allow(unsafe_code)]
 
 use std::arch::x86_64::{
-    __m256d, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_cvtsd_f64, _mm_unpackhi_pd,
-    _mm256_add_pd, _mm256_and_pd, _mm256_andnot_pd, _mm256_blendv_pd, _mm256_castpd256_pd128,
-    _mm256_cmp_pd, _mm256_div_pd, _mm256_extractf128_pd, _mm256_max_pd, _mm256_mul_pd,
+    __m128d, __m256d, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_add_epi64,
+    _mm_castpd_si128, _mm_castsi128_pd, _mm_cvtsd_f64, _mm_set1_epi64x, _mm_slli_epi64,
+    _mm_srli_epi64, _mm_sub_epi64, _mm_unpackhi_pd, _mm256_add_pd, _mm256_and_pd, _mm256_andnot_pd,
+    _mm256_blendv_pd, _mm256_castpd128_pd256, _mm256_castpd256_pd128, _mm256_cmp_pd, _mm256_div_pd,
+    _mm256_extractf128_pd, _mm256_insertf128_pd, _mm256_max_pd, _mm256_movemask_pd, _mm256_mul_pd,
     _mm256_or_pd, _mm256_set_pd, _mm256_set1_pd, _mm256_sqrt_pd, _mm256_sub_pd, _mm256_xor_pd,
 };
 
@@ -178,6 +180,34 @@ fn ge(a: L, b: L) -> L {
 #[inline]
 fn ne(a: L, b: L) -> L {
     _mm256_cmp_pd::<_CMP_NEQ_OQ>(a, b)
+}
+#[target_feature(enable = "avx")]
+#[inline]
+fn all(mask: L) -> bool {
+    _mm256_movemask_pd(mask) == 0b1111
+}
+/// The float next to `p` (finite, not zero) away from zero where `o` (not zero) has
+/// the sign of `p`, towards zero where it has the other: the bits of `p` plus one,
+/// or minus one, as in `one_ulp_towards`; in two halves, AVX having no 64-bit
+/// integer addition on its full registers.
+#[target_feature(enable = "avx")]
+#[inline]
+fn step_towards(p: L, o: L) -> L {
+    let differ = _mm256_xor_pd(p, o);
+    let low = step_half(_mm256_castpd256_pd128(p), _mm256_castpd256_pd128(differ));
+    let high = step_half(
+        _mm256_extractf128_pd::<1>(p),
+        _mm256_extractf128_pd::<1>(differ),
+    );
+    _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(low), high)
+}
+/// `step_towards` on two lanes, `differ` holding the bits of `p ^ o`.
+#[target_feature(enable = "avx")]
+#[inline]
+fn step_half(p: __m128d, differ: __m128d) -> __m128d {
+    let signs = _mm_srli_epi64::<63>(_mm_castpd_si128(differ));
+    let delta = _mm_sub_epi64(_mm_set1_epi64x(1), _mm_slli_epi64::<1>(signs));
+    _mm_castsi128_pd(_mm_add_epi64(_mm_castpd_si128(p), delta))
 }
 #[target_feature(enable = "avx")]
 #[inline]

@@ -233,6 +233,27 @@ mod tests {
         agrees_with_the_course(FourLanes::fastest());
     }
 
+    #[test]
+    fn origins_in_the_rare_cases_are_the_courses() {
+        let scene = scene();
+        let (rays, nearest) = fours(&scene)[0];
+        let mut hits = course_hits(&scene, &rays, nearest);
+        hits[1].point.x = 0.0;
+        hits[2].offset.y = 0.0;
+        hits[3].offset.z = Real::NAN;
+        for lanes in [FourLanes::Portable, FourLanes::fastest()] {
+            let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
+            let (origin, direction) = lanes.bounces(four, [[0.6, 0.8, 0.3]; 4]);
+            for (k, hit) in hits.iter().enumerate() {
+                let course = hit.spawn(vector(&direction, k)).origin;
+                assert_eq!(
+                    vector(&origin, k).to_array().map(Real::to_bits),
+                    course.to_array().map(Real::to_bits)
+                );
+            }
+        }
+    }
+
     /// Asserts that `lanes` draw the course's light samples towards a sphere light
     /// to the last bit, rays and their absence included, from points inside the
     /// light too.

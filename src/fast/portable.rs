@@ -103,6 +103,31 @@ fn ge(a: L, b: L) -> L {
 fn ne(a: L, b: L) -> L {
     a.simd_ne(b)
 }
+/// Whether every lane of `mask` is set.
+#[inline]
+fn all(mask: L) -> bool {
+    mask.all()
+}
+/// The float next to `p` (finite, not zero) away from zero where `o` (not zero) has
+/// the sign of `p`, towards zero where it has the other: the bits of `p` plus one,
+/// or minus one, as in `one_ulp_towards`.
+#[cfg(not(feature = "f32"))]
+#[inline]
+fn step_towards(p: L, o: L) -> L {
+    use wide::{bytemuck::cast, u64x4};
+    let (bits, differ): (u64x4, u64x4) = (cast(p), cast(p ^ o));
+    cast(bits + u64x4::splat(1) - ((differ >> 63) << 1))
+}
+/// The float next to `p` (finite, not zero) away from zero where `o` (not zero) has
+/// the sign of `p`, towards zero where it has the other: the bits of `p` plus one,
+/// or minus one, as in `one_ulp_towards`.
+#[cfg(feature = "f32")]
+#[inline]
+fn step_towards(p: L, o: L) -> L {
+    use wide::{bytemuck::cast, u32x4};
+    let (bits, differ): (u32x4, u32x4) = (cast(p), cast(p ^ o));
+    cast(bits + u32x4::splat(1) - ((differ >> 31) << 1))
+}
 /// `a` in the lanes where `mask` is set, `b` in the others.
 #[inline]
 fn select(mask: L, a: L, b: L) -> L {

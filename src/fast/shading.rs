@@ -77,10 +77,11 @@ pub struct LightSamples {
     pub kept: [Real; 4],
 }
 
-/// Defines `sphere_hits`, `point_light`, `sphere_light` and `bounces` in the module that invokes it,
-/// for its lane type `L` and its lane operations (those of the sphere test, and
-/// `abs`, `max`), each function with the attributes given. No closure is used: one
-/// inside a function compiled with AVX is compiled without it, and called.
+/// Defines `sphere_hits`, `point_light`, `sphere_light` and `bounces` in the module
+/// that invokes it, for its lane type `L` and its lane operations (those of the
+/// sphere test, and `abs`, `max`, `all`, `step_towards`), each function with the
+/// attributes given. No closure is used: one inside a function compiled with AVX is
+/// compiled without it, and called.
 macro_rules! four_hit_shading {
     ($(#[$attribute:meta])*) => {
         /// The three coordinates of four vectors, one vector per lane.
@@ -148,9 +149,19 @@ macro_rules! four_hit_shading {
             plus(plus(scale(x, t1), scale(y, t2)), scale(z, n))
         }
 
+        /// The lanes where `one_ulp_towards(p, o)` takes its usual case: `p` finite
+        /// and not zero, `o` not zero nor NaN.
+        $(#[$attribute])*
+        #[inline]
+        fn usual(p: L, o: L) -> L {
+            let finite = lt(abs(p), splat($crate::maths::Real::INFINITY));
+            and(and(ne(p, splat(0.0)), finite), ne(o, splat(0.0)))
+        }
+
         /// The origins of rays leaving four hits (`point`, `offset`) along
-        /// `direction`: `Hit::spawn`, the offset chosen and added on the lanes, the
-        /// last float of each coordinate one number at a time.
+        /// `direction`: `Hit::spawn` on the lanes, the last float of each coordinate
+        /// too where every lane takes `one_ulp_towards`'s usual case (nearly
+        /// always), one number at a time otherwise.
         $(#[$attribute])*
         #[inline]
         fn spawn(
@@ -165,7 +176,13 @@ macro_rules! four_hit_shading {
                 select(away, neg(y), y),
                 select(away, neg(z), z),
             ];
-            let (mut origin, offset) = (scatter3(plus(point, offset)), scatter3(offset));
+            let pushed = plus(point, offset);
+            let [px, py, pz] = pushed;
+            let [ox, oy, oz] = offset;
+            if all(and(usual(px, ox), and(usual(py, oy), usual(pz, oz)))) {
+                return scatter3([step_towards(px, ox), step_towards(py, oy), step_towards(pz, oz)]);
+            }
+            let (mut origin, offset) = (scatter3(pushed), scatter3(offset));
             for axis in 0..3 {
                 for k in 0..4 {
                     let p = origin[axis][k];
