@@ -9,14 +9,24 @@
 
 use crate::fast::direct_at_once::{Direct, Towards};
 use crate::geometry::{Hit, Ray};
-use crate::maths::Real;
+use crate::materials::Material;
+use crate::maths::{Colour, Real};
 use crate::scene::Scene;
 use crate::scene::occlusion::closer_than;
 
 /// The hit record of the nearest mesh that `ray` meets closer than its nearest
-/// sphere, `sphere` (distance and number), if one is.
-pub fn nearer_mesh(scene: &Scene, ray: &Ray, sphere: Option<(Real, usize)>) -> Option<Hit> {
-    scene.nearest_mesh(ray, sphere.map_or(Real::INFINITY, |(t, _)| t))
+/// sphere, `sphere` (distance and number), if one is, facing the ray, and the
+/// mesh's albedo.
+pub fn nearer_mesh(
+    scene: &Scene,
+    ray: &Ray,
+    sphere: Option<(Real, usize)>,
+) -> Option<(Hit, Colour)> {
+    let hit = scene.nearest_mesh(ray, sphere.map_or(Real::INFINITY, |(t, _)| t))?;
+    let Material::Diffuse { albedo } = hit.material else {
+        unreachable!("paths at once are used only where every object is diffuse")
+    };
+    Some((hit.facing_the_ray(), albedo))
 }
 
 // ANCHOR: in_the_way

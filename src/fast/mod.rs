@@ -8,9 +8,11 @@
 //! | [`portable`] | 3 | its lanes on any processor (the `wide` crate) | |
 //! | `avx` | 3 | its lanes in AVX instructions, on x86-64 | |
 //! | [`sphere_lanes`] | 3 | the nearest sphere of each of four rays | `Scene::nearest_sphere` |
-//! | [`shading`] | 3 | four hits' records, point light and bounces, written once for any lanes | `hit_at`, `direct_light`, `cosine_direction` |
+//! | [`shading`] | 3 | four hits' records, direct light and bounces, written once for any lanes | `hit_at`, `direct_light`, `cosine_direction` |
 //! | [`four_lanes`] | 3 | the choice of AVX or portable lanes for the two above | |
 //! | [`paths_at_once`] | 3 | a row's pixels four paths at a time | `pixel` and `radiance` |
+//! | [`path`] | 3 | one pixel's samples, one hit per step, summed as the recursion returns | `radiance` |
+//! | [`hits_at_once`] | 3 | the work at those four paths' hits, on the lanes | `diffuse` |
 //! | [`direct_at_once`] | 3 | the direct light of four paths, their shadow rays traced together | `direct_light` |
 //! | [`meshes_at_once`] | 5 | the meshes those paths meet, searched after their spheres | `Scene::intersect` |
 //! | [`sah`] | 6 | splits chosen by the surface area heuristic | `Bvh::build` |
@@ -25,7 +27,9 @@
 pub mod avx;
 pub mod direct_at_once;
 pub mod four_lanes;
+pub mod hits_at_once;
 pub mod lanes;
+pub mod path;
 pub mod paths_at_once;
 pub mod portable;
 pub mod shading;

@@ -16,8 +16,8 @@
 //! [`Hit::spawn_towards`]: crate::geometry::Hit::spawn_towards
 //! [`Hit::spawn`]: crate::geometry::Hit::spawn
 //! [`sample_cosine_hemisphere`]: crate::maths::sampling::sample_cosine_hemisphere
-//! [`Frame::new`]: crate::maths::Frame::new
-//! [`Frame::to_world`]: crate::maths::Frame::to_world
+//! [`Frame::new`]: crate::maths::frame::Frame::new
+//! [`Frame::to_world`]: crate::maths::frame::Frame::to_world
 //! [`one_ulp_towards`]: crate::geometry::spawn::one_ulp_towards
 
 use crate::maths::{Real, Vec3};

@@ -1,0 +1,193 @@
+//! Beyond the course: the work at the hits of the paths followed at once, four at a
+//! time on the lanes ([`FourLanes`]): their records on spheres, their direct light
+//! (a point light and its shadow rays, or samples of a sphere light), and their
+//! bounces. Each is written once for any lanes in [`shading`](super::shading), the
+//! course's functions step by step, so that every number is theirs to the last bit.
+
+use crate::fast::direct_at_once::{Direct, Towards};
+use crate::fast::four_lanes::FourLanes;
+use crate::fast::path::{Path, Shaded};
+use crate::fast::shading::vector;
+use crate::fast::sphere_lanes::SphereLanes;
+use crate::geometry::{Hit, Ray};
+#[cfg(feature = "s4")]
+use crate::lights::SphereLight;
+use crate::lights::{Light, PointLight};
+use crate::materials::Material;
+use crate::maths::Real;
+#[cfg(feature = "s4")]
+use crate::maths::{Colour, PI, uniform_pair};
+use crate::scene::Scene;
+
+/// How many paths one thread follows at once: one per lane.
+pub const PATHS: usize = 4;
+
+/// The records of the hits `nearest` (distance and sphere of `scene`) of four
+/// `rays`, their normals facing the rays, worked out on the lanes, with their
+/// albedos, into `hits`, which stay `None` where a ray meets no sphere (a lane
+/// whose ray meets none repeats another lane's sphere).
+pub(crate) fn sphere_hits(
+    scene: &Scene,
+    spheres: &SphereLanes,
+    rays: [&Ray; PATHS],
+    nearest: [Option<(Real, usize)>; PATHS],
+    hits: &mut [Shaded; PATHS],
+) {
+    let Some(&Some(any)) = nearest.iter().find(|n| n.is_some()) else {
+        return;
+    };
+    let [n0, n1, n2, n3] = nearest.map(|n| n.unwrap_or(any));
+    let (t, object) = ([n0.0, n1.0, n2.0, n3.0], [n0.1, n1.1, n2.1, n3.1]);
+    let rows = object.map(|object| spheres.sphere(object));
+    let found = spheres.lanes().sphere_hits(rays, t, rows);
+    for (k, hit) in hits.iter_mut().enumerate() {
+        let sphere = &scene.spheres[object[k]];
+        let Material::Diffuse { albedo } = sphere.material else {
+            unreachable!("paths at once are used only where every object is diffuse")
+        };
+        *hit = nearest[k].is_some().then_some((
+            Hit {
+                t: t[k],
+                point: vector(&found.point, k),
+                normal: vector(&found.normal, k),
+                error: vector(&found.error, k),
+                offset: vector(&found.offset, k),
+                material: sphere.material,
+                emission: sphere.emission,
+                object: object[k],
+                from_outside: found.outside[k].to_bits() != 0,
+            },
+            albedo,
+        ));
+    }
+}
+
+/// The direct light at the paths' hits (`hits[k]` for `paths[k]`): for the four
+/// hits at once on `lanes` where the light is a point light with shadows or
+/// (session 4) a sampled sphere light, as [`Direct::at`] does it for one;
+/// otherwise by `Direct::at`.
+pub(crate) fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
+    let scene = paths[0].tracer.scene;
+    match scene.light {
+        Some(Light::Point(light)) if scene.settings.shadows => {
+            point_light_all(lanes, paths, hits, &light);
+        }
+        #[cfg(feature = "s4")]
+        Some(Light::Sphere(light)) if scene.settings.light_sampling => {
+            sphere_light_all(lanes, paths, hits, &light);
+        }
+        _ => {
+            for (path, hit) in paths.iter_mut().zip(hits) {
+                if let Some((hit, albedo)) = hit {
+                    let (direct, skipped) = Direct::at(&mut path.tracer, hit, *albedo);
+                    (path.direct, path.skipped) = (Some(direct), skipped);
+                }
+            }
+        }
+    }
+}
+
+/// The light from the point light `light` at the paths' hits, and their shadow
+/// rays, on `lanes`: `Direct::at` with a point light and shadows.
+fn point_light_all(
+    lanes: FourLanes,
+    paths: &mut [Path],
+    hits: &[Shaded; PATHS],
+    light: &PointLight,
+) {
+    let Some([h0, h1, h2, h3]) = repeated(hits) else {
+        return;
+    };
+    let four = [&h0.0, &h1.0, &h2.0, &h3.0];
+    let lit = lanes.point_light(four, [h0.1, h1.1, h2.1, h3.1], light);
+    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
+        if hit.is_some() {
+            path.tracer.rays += 1;
+            let ray = Ray {
+                origin: vector(&lit.origin, k),
+                direction: vector(&lit.direction, k),
+            };
+            let (lit, towards) = (vector(&lit.lit, k), Towards::Point(lit.distance[k]));
+            (path.direct, path.skipped) = (Some(Direct::Shadowed { ray, lit, towards }), None);
+        }
+    }
+}
+
+/// One direction sampled towards the sphere light `light` from each of the paths'
+/// hits, its ray and the light it brings, on `lanes`: `Direct::at` with a sampled
+/// sphere light (session 4), each path drawing its own random numbers first.
+#[cfg(feature = "s4")]
+fn sphere_light_all(
+    lanes: FourLanes,
+    paths: &mut [Path],
+    hits: &[Shaded; PATHS],
+    light: &SphereLight,
+) {
+    let mut samples = [[0.0; 3]; PATHS];
+    for ((path, hit), sample) in paths.iter_mut().zip(hits).zip(&mut samples) {
+        if hit.is_some() {
+            let (u1, u2) = uniform_pair(&mut path.tracer.rng);
+            let phi = 2.0 * PI * u2;
+            *sample = [u1, phi.cos(), phi.sin()];
+        }
+    }
+    let Some([h0, h1, h2, h3]) = repeated(hits) else {
+        return;
+    };
+    let (four, albedo) = ([&h0.0, &h1.0, &h2.0, &h3.0], [h0.1, h1.1, h2.1, h3.1]);
+    let shape = (light.centre, light.radius, light.emission);
+    let found = lanes.sphere_light(four, albedo, samples, shape);
+    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
+        if hit.is_none() {
+            continue;
+        }
+        let mut direct = Direct::Known(Colour::ZERO);
+        if found.kept[k].to_bits() != 0 {
+            path.tracer.rays += 1;
+            let ray = Ray {
+                origin: vector(&found.origin, k),
+                direction: vector(&found.direction, k),
+            };
+            let (lit, towards) = (vector(&found.lit, k), Towards::Body(light.object));
+            direct = Direct::Shadowed { ray, lit, towards };
+        }
+        (path.direct, path.skipped) = (Some(direct), path.tracer.sampled_light());
+    }
+}
+
+/// Takes the paths on from their hits (`hits[k]` for `paths[k]`): keeps what each
+/// hit adds, and makes the next rays of those that bounce, the four at once on
+/// `lanes`, each from its own path's random numbers.
+pub(crate) fn bounce_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
+    let mut samples = [None; PATHS];
+    let mut bouncing = [None; PATHS];
+    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
+        if let Some((hit, albedo)) = hit
+            && path.go_on(hit, *albedo)
+        {
+            (samples[k], bouncing[k]) = (Some(path.bounce_sample()), Some(hit));
+        }
+    }
+    let Some([h0, h1, h2, h3]) = repeated(&bouncing) else {
+        return;
+    };
+    let any = samples.iter().flatten().next().copied().unwrap_or_default();
+    let (origin, direction) =
+        lanes.bounces([*h0, *h1, *h2, *h3], samples.map(|s| s.unwrap_or(any)));
+    for (k, path) in paths.iter_mut().enumerate() {
+        if samples[k].is_some() {
+            path.ray = Ray {
+                origin: vector(&origin, k),
+                direction: vector(&direction, k),
+            };
+        }
+    }
+}
+
+/// The four entries of `hits`, a lane without one repeating the first that has
+/// one; `None` if none has.
+fn repeated<T>(hits: &[Option<T>; PATHS]) -> Option<[&T; PATHS]> {
+    let first = hits.iter().flatten().next()?;
+    let lane = |k: usize| hits[k].as_ref().unwrap_or(first);
+    Some([lane(0), lane(1), lane(2), lane(3)])
+}
