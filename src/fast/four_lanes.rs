@@ -103,6 +103,14 @@ impl FourLanes {
     }
 }
 
+/// The four entries of `hits`, a lane without one repeating the first that has
+/// one; `None` if none has.
+pub(crate) fn repeated<T>(hits: &[Option<T>; 4]) -> Option<[&T; 4]> {
+    let first = hits.iter().flatten().next()?;
+    let lane = |k: usize| hits[k].as_ref().unwrap_or(first);
+    Some([lane(0), lane(1), lane(2), lane(3)])
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -254,55 +262,59 @@ mod tests {
         }
     }
 
-    /// Asserts that `lanes` draw the course's light samples towards a sphere light
-    /// to the last bit, rays and their absence included, from points inside the
-    /// light too.
+    /// The light samples of a sphere light, from session 4.
     #[cfg(feature = "s4")]
-    fn sample_the_light_as_the_course(lanes: FourLanes) {
+    mod light_samples {
+        use super::*;
         use crate::integrator::Tracer;
         use crate::lights::SphereLight;
         use crate::maths::uniform_pair;
-        let scene = scene();
-        // Around the second ball, so that the rays from its surface start inside.
-        let light = SphereLight::new(Vec3::new(20.0, -5.0, 3.0), 35.0, 2e10, 0);
-        let mut tracer = Tracer::new(&scene);
-        let (mut kept, mut rays, mut inside) = (0, 0, 0);
-        for (rays_of_four, nearest) in fours(&scene) {
-            let hits = course_hits(&scene, &rays_of_four, nearest);
-            let albedo = [Vec3::new(1.0, 0.5, 0.25); 4];
-            let mut samples = [[0.0; 3]; 4];
-            let mut expected = Vec::new();
-            for (hit, sample) in hits.iter().zip(&mut samples) {
-                let (u1, u2) = uniform_pair(&mut tracer.rng.clone());
-                let phi = 2.0 * PI * u2;
-                *sample = [u1, phi.cos(), phi.sin()];
-                expected.push(tracer.light_sample(&light, hit, albedo[0]));
-                inside += usize::from(light.cone(hit.point).is_none());
-            }
-            let shape = (light.centre, light.radius, light.emission);
-            let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
-            let found = lanes.sphere_light(four, albedo, samples, shape);
-            for (k, expected) in expected.iter().enumerate() {
-                let ray = (found.kept[k].to_bits() != 0).then(|| {
-                    let (origin, direction) =
-                        (vector(&found.origin, k), vector(&found.direction, k));
-                    (Ray { origin, direction }, vector(&found.lit, k))
-                });
-                assert_eq!(&ray, expected);
-                kept += usize::from(ray.is_some());
-            }
-            rays += 4;
-        }
-        // Many directions lie below their surfaces, and some points are inside the
-        // light: lanes with and without a ray are tested.
-        assert!(kept > rays / 4 && kept < rays * 3 / 4, "{kept} of {rays}");
-        assert!(inside > 100, "{inside} points inside the light");
-    }
 
-    #[cfg(feature = "s4")]
-    #[test]
-    fn both_lanes_sample_the_light_as_the_course_to_the_last_bit() {
-        sample_the_light_as_the_course(FourLanes::Portable);
-        sample_the_light_as_the_course(FourLanes::fastest());
+        /// Asserts that `lanes` draw the course's light samples towards a sphere light
+        /// to the last bit, rays and their absence included, from points inside the
+        /// light too.
+        fn sample_the_light_as_the_course(lanes: FourLanes) {
+            let scene = scene();
+            // Around the second ball, so that the rays from its surface start inside.
+            let light = SphereLight::new(Vec3::new(20.0, -5.0, 3.0), 35.0, 2e10, 0);
+            let mut tracer = Tracer::new(&scene);
+            let (mut kept, mut rays, mut inside) = (0, 0, 0);
+            for (rays_of_four, nearest) in fours(&scene) {
+                let hits = course_hits(&scene, &rays_of_four, nearest);
+                let albedo = [Vec3::new(1.0, 0.5, 0.25); 4];
+                let mut samples = [[0.0; 3]; 4];
+                let mut expected = Vec::new();
+                for (hit, sample) in hits.iter().zip(&mut samples) {
+                    let (u1, u2) = uniform_pair(&mut tracer.rng.clone());
+                    let phi = 2.0 * PI * u2;
+                    *sample = [u1, phi.cos(), phi.sin()];
+                    expected.push(tracer.light_sample(&light, hit, albedo[0]));
+                    inside += usize::from(light.cone(hit.point).is_none());
+                }
+                let shape = (light.centre, light.radius, light.emission);
+                let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
+                let found = lanes.sphere_light(four, albedo, samples, shape);
+                for (k, expected) in expected.iter().enumerate() {
+                    let ray = (found.kept[k].to_bits() != 0).then(|| {
+                        let (origin, direction) =
+                            (vector(&found.origin, k), vector(&found.direction, k));
+                        (Ray { origin, direction }, vector(&found.lit, k))
+                    });
+                    assert_eq!(&ray, expected);
+                    kept += usize::from(ray.is_some());
+                }
+                rays += 4;
+            }
+            // Many directions lie below their surfaces, and some points are inside the
+            // light: lanes with and without a ray are tested.
+            assert!(kept > rays / 4 && kept < rays * 3 / 4, "{kept} of {rays}");
+            assert!(inside > 100, "{inside} points inside the light");
+        }
+
+        #[test]
+        fn both_lanes_sample_the_light_as_the_course_to_the_last_bit() {
+            sample_the_light_as_the_course(FourLanes::Portable);
+            sample_the_light_as_the_course(FourLanes::fastest());
+        }
     }
 }

@@ -5,22 +5,17 @@
 //! course's functions step by step, so that every number is theirs to the last bit.
 
 use crate::fast::direct_at_once::{Direct, Towards};
-use crate::fast::four_lanes::FourLanes;
-use crate::fast::path::{Path, Shaded};
+use crate::fast::four_lanes::{FourLanes, repeated};
+#[cfg(feature = "s4")]
+use crate::fast::light_samples_at_once;
+use crate::fast::path::{PATHS, Path, Shaded};
 use crate::fast::shading::vector;
 use crate::fast::sphere_lanes::SphereLanes;
 use crate::geometry::{Hit, Ray};
-#[cfg(feature = "s4")]
-use crate::lights::SphereLight;
 use crate::lights::{Light, PointLight};
 use crate::materials::Material;
 use crate::maths::Real;
-#[cfg(feature = "s4")]
-use crate::maths::{Colour, PI, uniform_pair};
 use crate::scene::Scene;
-
-/// How many paths one thread follows at once: one per lane.
-pub const PATHS: usize = 4;
 
 /// The records of the hits `nearest` (distance and sphere of `scene`) of four
 /// `rays`, their normals facing the rays, worked out on the lanes, with their
@@ -74,7 +69,7 @@ pub(crate) fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PA
         }
         #[cfg(feature = "s4")]
         Some(Light::Sphere(light)) if scene.settings.light_sampling => {
-            sphere_light_all(lanes, paths, hits, &light);
+            light_samples_at_once::sphere_light_all(lanes, paths, hits, &light);
         }
         _ => {
             for (path, hit) in paths.iter_mut().zip(hits) {
@@ -113,48 +108,7 @@ fn point_light_all(
     }
 }
 
-/// One direction sampled towards the sphere light `light` from each of the paths'
-/// hits, its ray and the light it brings, on `lanes`: `Direct::at` with a sampled
-/// sphere light (session 4), each path drawing its own random numbers first.
-#[cfg(feature = "s4")]
-fn sphere_light_all(
-    lanes: FourLanes,
-    paths: &mut [Path],
-    hits: &[Shaded; PATHS],
-    light: &SphereLight,
-) {
-    let mut samples = [[0.0; 3]; PATHS];
-    for ((path, hit), sample) in paths.iter_mut().zip(hits).zip(&mut samples) {
-        if hit.is_some() {
-            let (u1, u2) = uniform_pair(&mut path.tracer.rng);
-            let phi = 2.0 * PI * u2;
-            *sample = [u1, phi.cos(), phi.sin()];
-        }
-    }
-    let Some([h0, h1, h2, h3]) = repeated(hits) else {
-        return;
-    };
-    let (four, albedo) = ([&h0.0, &h1.0, &h2.0, &h3.0], [h0.1, h1.1, h2.1, h3.1]);
-    let shape = (light.centre, light.radius, light.emission);
-    let found = lanes.sphere_light(four, albedo, samples, shape);
-    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
-        if hit.is_none() {
-            continue;
-        }
-        let mut direct = Direct::Known(Colour::ZERO);
-        if found.kept[k].to_bits() != 0 {
-            path.tracer.rays += 1;
-            let ray = Ray {
-                origin: vector(&found.origin, k),
-                direction: vector(&found.direction, k),
-            };
-            let (lit, towards) = (vector(&found.lit, k), Towards::Body(light.object));
-            direct = Direct::Shadowed { ray, lit, towards };
-        }
-        (path.direct, path.skipped) = (Some(direct), path.tracer.sampled_light());
-    }
-}
-
+// ANCHOR: bounce_all
 /// Takes the paths on from their hits (`hits[k]` for `paths[k]`): keeps what each
 /// hit adds, and makes the next rays of those that bounce, the four at once on
 /// `lanes`, each from its own path's random numbers.
@@ -183,11 +137,4 @@ pub(crate) fn bounce_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; P
         }
     }
 }
-
-/// The four entries of `hits`, a lane without one repeating the first that has
-/// one; `None` if none has.
-fn repeated<T>(hits: &[Option<T>; PATHS]) -> Option<[&T; PATHS]> {
-    let first = hits.iter().flatten().next()?;
-    let lane = |k: usize| hits[k].as_ref().unwrap_or(first);
-    Some([lane(0), lane(1), lane(2), lane(3)])
-}
+// ANCHOR_END: bounce_all

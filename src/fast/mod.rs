@@ -13,6 +13,7 @@
 //! | [`paths_at_once`] | 3 | a row's pixels four paths at a time | `pixel` and `radiance` |
 //! | [`path`] | 3 | one pixel's samples, one hit per step, summed as the recursion returns | `radiance` |
 //! | [`hits_at_once`] | 3 | the work at those four paths' hits, on the lanes | `diffuse` |
+//! | [`light_samples_at_once`] | 4 | their samples of a sphere light, on the lanes | `light_sample` |
 //! | [`direct_at_once`] | 3 | the direct light of four paths, their shadow rays traced together | `direct_light` |
 //! | [`meshes_at_once`] | 5 | the meshes those paths meet, searched after their spheres | `Scene::intersect` |
 //! | [`sah`] | 6 | splits chosen by the surface area heuristic | `Bvh::build` |
@@ -41,6 +42,8 @@ pub mod avx_lanes;
 pub mod fast_bvh;
 #[cfg(feature = "s6")]
 pub mod float_lanes;
+#[cfg(feature = "s4")]
+pub mod light_samples_at_once;
 #[cfg(feature = "s5")]
 pub mod meshes_at_once;
 #[cfg(feature = "s6")]

@@ -13,6 +13,10 @@ use crate::samplers::adaptive::{Estimate, precise_enough};
 use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
 
+/// How many paths one thread follows at once: one per lane of
+/// [`FourLanes`](crate::fast::four_lanes::FourLanes).
+pub const PATHS: usize = 4;
+
 /// A path's hit, facing its ray, and the albedo of the surface hit.
 pub(crate) type Shaded = Option<(Hit, Colour)>;
 

@@ -24,8 +24,8 @@
 //!
 //! [`SphereLanes::nearest_of_four`]: crate::fast::sphere_lanes::SphereLanes::nearest_of_four
 
-use crate::fast::hits_at_once::{PATHS, bounce_all, light_all, sphere_hits};
-use crate::fast::path::Path;
+use crate::fast::hits_at_once::{bounce_all, light_all, sphere_hits};
+use crate::fast::path::{PATHS, Path};
 use crate::fast::sphere_lanes::SphereLanes;
 use crate::materials::Material;
 use crate::maths::Colour;

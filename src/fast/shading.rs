@@ -6,9 +6,11 @@
 //! to the last bit: [`Sphere::hit_at`], [`Hit::facing_the_ray`],
 //! [`PointLight::lambert`], [`Hit::spawn_towards`], `Tracer::light_sample` (session
 //! 4), [`sample_cosine_hemisphere`], [`Frame::new`] and [`Frame::to_world`],
-//! [`Hit::spawn`]. Two steps stay one number at a time: the cosine and sine of an
-//! angle (the C library's, which has no lane version that rounds as it does) and the
-//! last step of a new ray's origin, [`one_ulp_towards`].
+//! [`Hit::spawn`], the last float of a new ray's origin included
+//! ([`one_ulp_towards`]: its bits plus or minus one, on the lanes, but for its rare
+//! cases). One step stays one number at a time, before these functions: the cosine
+//! and sine of an angle, the C library's, which has no lane version that rounds as
+//! it does.
 //!
 //! [`Sphere::hit_at`]: crate::geometry::Sphere::hit_at
 //! [`Hit::facing_the_ray`]: crate::geometry::Hit::facing_the_ray
@@ -130,6 +132,7 @@ macro_rules! four_hit_shading {
             [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
         }
 
+        // ANCHOR: to_world
         /// `Frame::new(n).to_world(local)`: the local coordinates `local` in the
         /// frame around the unit vectors `n`.
         $(#[$attribute])*
@@ -148,6 +151,7 @@ macro_rules! four_hit_shading {
             let [x, y, z] = local;
             plus(plus(scale(x, t1), scale(y, t2)), scale(z, n))
         }
+        // ANCHOR_END: to_world
 
         /// The lanes where `one_ulp_towards(p, o)` takes its usual case: `p` finite
         /// and not zero, `o` not zero nor NaN.
