@@ -1,6 +1,7 @@
-//! The four-ray sphere test in AVX instructions, four `f64` per instruction, on the
-//! x86-64 processors that have them (almost all made since 2011). The processor is
-//! asked at run time ([`Avx::detect`]), so the build needs no flag.
+//! The four-ray sphere test and the four hits' shading in AVX instructions, four
+//! `f64` per instruction, on the x86-64 processors that have them (almost all made
+//! since 2011). The processor is asked at run time ([`Avx::detect`]), so the build
+//! needs no flag.
 //!
 //! Every function here is a safe function compiled with AVX
 //! (`#[target_feature(enable = "avx")]`): inside them the AVX instructions are safe

@@ -154,6 +154,12 @@ mod tests {
         Vec3::new(u(), u(), u())
     }
 
+    /// The bits of `v`'s coordinates: equal bits are the same number to the last
+    /// bit, the sign of a zero included.
+    fn bits(v: Vec3) -> [impl PartialEq + std::fmt::Debug; 3] {
+        v.to_array().map(Real::to_bits)
+    }
+
     /// Four rays and their nearest spheres' distances and indices.
     type Four = ([Ray; 4], [(Real, usize); 4]);
 
@@ -202,10 +208,10 @@ mod tests {
                 nearest.map(|n| rows.sphere(n.1)),
             );
             for (k, hit) in expected.iter().enumerate() {
-                assert_eq!(vector(&found.point, k), hit.point);
-                assert_eq!(vector(&found.normal, k), hit.normal);
-                assert_eq!(vector(&found.error, k), hit.error);
-                assert_eq!(vector(&found.offset, k), hit.offset);
+                assert_eq!(bits(vector(&found.point, k)), bits(hit.point));
+                assert_eq!(bits(vector(&found.normal, k)), bits(hit.normal));
+                assert_eq!(bits(vector(&found.error, k)), bits(hit.error));
+                assert_eq!(bits(vector(&found.offset, k)), bits(hit.offset));
                 assert_eq!(found.outside[k].to_bits() != 0, hit.from_outside);
             }
             let hits = [&expected[0], &expected[1], &expected[2], &expected[3]];
@@ -219,14 +225,14 @@ mod tests {
             for (k, hit) in expected.iter().enumerate() {
                 let (shadow, distance) = hit.spawn_towards(light.position);
                 let lambert = light.lambert(hit.point, hit.normal, albedo[k]);
-                assert_eq!(vector(&lit.lit, k), lambert);
-                assert_eq!(vector(&lit.origin, k), shadow.origin);
-                assert_eq!(vector(&lit.direction, k), shadow.direction);
-                assert_eq!(lit.distance[k], distance);
+                assert_eq!(bits(vector(&lit.lit, k)), bits(lambert));
+                assert_eq!(bits(vector(&lit.origin, k)), bits(shadow.origin));
+                assert_eq!(bits(vector(&lit.direction, k)), bits(shadow.direction));
+                assert_eq!(lit.distance[k].to_bits(), distance.to_bits());
                 let [u1, u2] = samples[k];
                 let bounce = Frame::new(hit.normal).to_world(sample_cosine_hemisphere(u1, u2));
-                assert_eq!(vector(&direction, k), bounce);
-                assert_eq!(vector(&origin, k), hit.spawn(bounce).origin);
+                assert_eq!(bits(vector(&direction, k)), bits(bounce));
+                assert_eq!(bits(vector(&origin, k)), bits(hit.spawn(bounce).origin));
             }
         }
     }
@@ -254,10 +260,7 @@ mod tests {
             let (origin, direction) = lanes.bounces(four, [[0.6, 0.8, 0.3]; 4]);
             for (k, hit) in hits.iter().enumerate() {
                 let course = hit.spawn(vector(&direction, k)).origin;
-                assert_eq!(
-                    vector(&origin, k).to_array().map(Real::to_bits),
-                    course.to_array().map(Real::to_bits)
-                );
+                assert_eq!(bits(vector(&origin, k)), bits(course));
             }
         }
     }
@@ -298,9 +301,11 @@ mod tests {
                     let ray = (found.kept[k].to_bits() != 0).then(|| {
                         let (origin, direction) =
                             (vector(&found.origin, k), vector(&found.direction, k));
-                        (Ray { origin, direction }, vector(&found.lit, k))
+                        [bits(origin), bits(direction), bits(vector(&found.lit, k))]
                     });
-                    assert_eq!(&ray, expected);
+                    let expected = expected
+                        .map(|(ray, lit)| [bits(ray.origin), bits(ray.direction), bits(lit)]);
+                    assert_eq!(ray, expected);
                     kept += usize::from(ray.is_some());
                 }
                 rays += 4;

@@ -8,8 +8,8 @@
 //! | [`portable`] | 3 | its lanes on any processor (the `wide` crate) | |
 //! | `avx` | 3 | its lanes in AVX instructions, on x86-64 | |
 //! | [`sphere_lanes`] | 3 | the nearest sphere of each of four rays | `Scene::nearest_sphere` |
-//! | [`shading`] | 3 | four hits' records, direct light and bounces, written once for any lanes | `hit_at`, `direct_light`, `cosine_direction` |
-//! | [`four_lanes`] | 3 | the choice of AVX or portable lanes for the two above | |
+//! | [`shading`] | 3 | four hits' records, direct light and bounces, written once for any lanes | `hit_at`, `direct_light`, `light_sample`, `cosine_direction`, `Hit::spawn` |
+//! | [`four_lanes`] | 3 | the choice of AVX or portable lanes for the sphere test (`lanes`) and the shading (`shading`) | |
 //! | [`paths_at_once`] | 3 | a row's pixels four paths at a time | `pixel` and `radiance` |
 //! | [`path`] | 3 | one pixel's samples, one hit per step, summed as the recursion returns | `radiance` |
 //! | [`hits_at_once`] | 3 | the work at those four paths' hits, on the lanes | `diffuse` |

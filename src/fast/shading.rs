@@ -1,6 +1,6 @@
 //! The work at four paths' hits, written once for any type of four lanes: their hit
-//! records on spheres, their direct light from a point light with its shadow rays,
-//! and their cosine-weighted bounces.
+//! records on spheres, their direct light (a point light with its shadow rays, or a
+//! sample of a sphere light), and their cosine-weighted bounces.
 //!
 //! Every step is the course function's, in its order, so every number is the same
 //! to the last bit: [`Sphere::hit_at`], [`Hit::facing_the_ray`],
@@ -10,7 +10,10 @@
 //! ([`one_ulp_towards`]: its bits plus or minus one, on the lanes, but for its rare
 //! cases). One step stays one number at a time, before these functions: the cosine
 //! and sine of an angle, the C library's, which has no lane version that rounds as
-//! it does.
+//! it does. One number may differ in the sign of a zero: a cosine of `-0` in
+//! `lambert`'s `.max(0.0)`, which Rust leaves free to give either zero, and which
+//! the lanes give as `+0`; the light it scales is zero either way, and the image
+//! is the same.
 //!
 //! [`Sphere::hit_at`]: crate::geometry::Sphere::hit_at
 //! [`Hit::facing_the_ray`]: crate::geometry::Hit::facing_the_ray
@@ -154,7 +157,8 @@ macro_rules! four_hit_shading {
         // ANCHOR_END: to_world
 
         /// The lanes where `one_ulp_towards(p, o)` takes its usual case: `p` finite
-        /// and not zero, `o` not zero nor NaN.
+        /// and not zero, `o` not zero (a NaN `o` makes `p` NaN, so such a lane is
+        /// never usual).
         $(#[$attribute])*
         #[inline]
         fn usual(p: L, o: L) -> L {
@@ -238,8 +242,8 @@ macro_rules! four_hit_shading {
             }
         }
 
-        /// `PointLight::lambert` and `Hit::spawn_towards` the light at four hits
-        /// (normals facing their rays) of surfaces of `albedo`.
+        /// `PointLight::lambert` and `Hit::spawn_towards` (towards the light) at four
+        /// hits (normals facing their rays) of surfaces of `albedo`.
         $(#[$attribute])*
         pub(crate) fn point_light(
             hits: [&$crate::geometry::Hit; 4],
