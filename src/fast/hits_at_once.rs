@@ -1,7 +1,7 @@
 //! Beyond the course: the work at the hits of the paths followed at once, four at a
 //! time on the lanes ([`FourLanes`]): their records on spheres, their direct light
 //! (a point light and its shadow rays, or samples of a sphere light), and their
-//! bounces. Each is written once for any lanes in [`shading`](super::shading), the
+//! bounces. Each is written once for any lanes in [`shading`], the
 //! course's functions step by step, so that every number is theirs to the last bit.
 
 use crate::fast::direct_at_once::{Direct, Towards};
@@ -9,7 +9,7 @@ use crate::fast::four_lanes::{FourLanes, repeated};
 #[cfg(feature = "s4")]
 use crate::fast::light_samples_at_once;
 use crate::fast::path::{PATHS, Path, Shaded};
-use crate::fast::shading::vector;
+use crate::fast::shading::{self, vector};
 use crate::fast::sphere_lanes::SphereLanes;
 use crate::geometry::{Hit, Ray};
 use crate::lights::{Light, PointLight};
@@ -98,10 +98,7 @@ fn point_light_all(
     for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
         if hit.is_some() {
             path.tracer.rays += 1;
-            let ray = Ray {
-                origin: vector(&lit.origin, k),
-                direction: vector(&lit.direction, k),
-            };
+            let ray = shading::ray(&lit.origin, &lit.direction, k);
             let (lit, towards) = (vector(&lit.lit, k), Towards::Point(lit.distance[k]));
             (path.direct, path.skipped) = (Some(Direct::Shadowed { ray, lit, towards }), None);
         }
@@ -130,10 +127,7 @@ pub(crate) fn bounce_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; P
         lanes.bounces([*h0, *h1, *h2, *h3], samples.map(|s| s.unwrap_or(any)));
     for (k, path) in paths.iter_mut().enumerate() {
         if samples[k].is_some() {
-            path.ray = Ray {
-                origin: vector(&origin, k),
-                direction: vector(&direction, k),
-            };
+            path.ray = shading::ray(&origin, &direction, k);
         }
     }
 }

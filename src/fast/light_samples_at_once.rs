@@ -6,8 +6,7 @@
 use crate::fast::direct_at_once::{Direct, Towards};
 use crate::fast::four_lanes::{FourLanes, repeated};
 use crate::fast::path::{PATHS, Path, Shaded};
-use crate::fast::shading::vector;
-use crate::geometry::Ray;
+use crate::fast::shading::{self, vector};
 use crate::lights::SphereLight;
 use crate::maths::{Colour, PI, uniform_pair};
 
@@ -41,10 +40,7 @@ pub(crate) fn sphere_light_all(
         let mut direct = Direct::Known(Colour::ZERO);
         if found.kept[k].to_bits() != 0 {
             path.tracer.rays += 1;
-            let ray = Ray {
-                origin: vector(&found.origin, k),
-                direction: vector(&found.direction, k),
-            };
+            let ray = shading::ray(&found.origin, &found.direction, k);
             let (lit, towards) = (vector(&found.lit, k), Towards::Body(light.object));
             direct = Direct::Shadowed { ray, lit, towards };
         }

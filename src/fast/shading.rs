@@ -25,6 +25,7 @@
 //! [`Frame::to_world`]: crate::maths::frame::Frame::to_world
 //! [`one_ulp_towards`]: crate::geometry::spawn::one_ulp_towards
 
+use crate::geometry::Ray;
 use crate::maths::{Real, Vec3};
 
 /// Four vectors by coordinate: `v[axis][k]` is coordinate `axis` of vector `k`.
@@ -34,6 +35,15 @@ pub type FourVectors = [[Real; 4]; 3];
 #[inline(always)]
 pub fn vector(v: &FourVectors, k: usize) -> Vec3 {
     Vec3::new(v[0][k], v[1][k], v[2][k])
+}
+
+/// Ray `k` of four whose origins are `origin` and directions `direction`.
+#[inline(always)]
+pub fn ray(origin: &FourVectors, direction: &FourVectors, k: usize) -> Ray {
+    Ray {
+        origin: vector(origin, k),
+        direction: vector(direction, k),
+    }
 }
 
 /// What [`Sphere::hit_at`](crate::geometry::Sphere::hit_at) finds for four rays,
