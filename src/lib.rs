@@ -28,6 +28,7 @@
 //! | module | what it does | sessions |
 //! |---|---|---|
 //! | [`maths`] | number types, random numbers, sampling | 1, 3 |
+//! | [`files`] | where a scene's meshes and textures are read: the disk, or memory in a web page | 1 |
 //! | [`geometry`] | rays, hit records, spheres, boxes, triangles | 1, 2, 5 |
 //! | [`materials`] | diffuse, mirror, glass, Fresnel glass, textures | 1, 2, 4, 7 |
 //! | [`camera`] | the pinhole, antialiasing, the thin lens, the aimed camera | 1, 3, 4, 7 |
@@ -65,6 +66,8 @@
 compile_error!("raycourse needs at least the first session: enable feature s1 (or a later one)");
 
 pub mod maths;
+
+pub mod files;
 
 pub mod geometry;
 
@@ -104,8 +107,11 @@ pub mod inspect;
 
 #[cfg(feature = "s3")]
 pub use engines::{render, render_reporting};
+pub use files::{Disk, Files, InMemory};
 pub use render::{Film, Render, encode_png};
 #[cfg(not(feature = "s3"))]
 pub use render::{render, render_reporting};
 pub use scene::Scene;
-pub use scene_file::{Overrides, SceneError, Stage, find_stage, load_scene, parse_scene, stages};
+pub use scene_file::{
+    Overrides, SceneError, Stage, find_stage, load_scene, parse_scene, parse_scene_from, stages,
+};

@@ -5,9 +5,10 @@ use std::num::NonZeroU32;
 use std::path::Path;
 
 use crate::engines::render_reporting;
+use crate::files::Files;
 use crate::render::Film;
 use crate::scene::Scene;
-use crate::scene_file::{Overrides, SceneError, Stage, parse_scene};
+use crate::scene_file::{Overrides, SceneError, Stage, parse_scene_from};
 use crate::studies::reference::{load_reference, reference_path, save_reference};
 use crate::studies::variant::Variant;
 
@@ -49,6 +50,8 @@ pub struct Source<'a> {
     pub size: (u32, u32),
     /// Folder of cached renders.
     pub cache: &'a Path,
+    /// Where the stage's meshes and textures are read.
+    pub files: &'a dyn Files,
     /// Told how many samples of each row are done, for a progress bar.
     pub progress: &'a (dyn Fn(u64) + Sync),
 }
@@ -96,7 +99,7 @@ impl Source<'_> {
             seed,
             ..Overrides::default()
         };
-        parse_scene(text, &self.stage.file(), &overrides)
+        parse_scene_from(text, &self.stage.file(), &overrides, self.files)
     }
 
     /// The film of the scene-file text `text` at the student's size, with `samples`

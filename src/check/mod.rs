@@ -11,6 +11,7 @@
 //! | [`regions`] | which object each pixel shows, to say where the differences are |
 //! | [`mistakes`] | the classic mistakes, each as the image it would make |
 //! | [`report`] | the verdict, the figures behind it and the hint |
+//! | [`wording`] | the report in words, as `check` prints it |
 
 pub mod compare;
 #[cfg(feature = "s7")]
@@ -21,3 +22,5 @@ pub mod mistakes;
 pub mod regions;
 #[cfg(feature = "s7")]
 pub mod report;
+#[cfg(feature = "s7")]
+pub mod wording;

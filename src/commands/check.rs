@@ -81,7 +81,9 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         .expect("clap requires an image without --all");
     let image = read_image(path)?;
     let report = check_one(&args, stage, &image, path)?;
-    print_report(stage, &report);
+    for line in report.lines(stage) {
+        println!("{line}");
+    }
     if let Some(diff) = &args.diff {
         let picture = report.difference_image(&image);
         let png = raycourse::render::png::encode_rgb8(
@@ -131,6 +133,7 @@ fn check_one(
         stage,
         size: image.dimensions(),
         cache: &args.cache,
+        files: &raycourse::Disk,
         progress: &progress,
     };
     let lossy = path
@@ -139,54 +142,6 @@ fn check_one(
     let report = pool.install(|| check(&source, image, lossy));
     bar.finish_and_clear();
     Ok(report?)
-}
-
-/// Prints what `report` says of `stage`.
-fn print_report(stage: &Stage, report: &Report) {
-    let unit = if report.outcome.cell == 1 {
-        "pixels"
-    } else {
-        "blocks of 8 x 8 pixels"
-    };
-    let share = 100.0 * report.outcome.share();
-    match report.verdict {
-        Verdict::Matches => println!(
-            "{}: matches ({share:.1}% of {unit} differ, within what is allowed)",
-            stage.name
-        ),
-        Verdict::Differs => println!("{}: differs ({share:.1}% of {unit} differ)", stage.name),
-    }
-    let [r, g, b] = report.ratio;
-    println!("  brightness against the reference: red x{r:.2}, green x{g:.2}, blue x{b:.2}");
-    if report.verdict == Verdict::Differs {
-        let places: Vec<String> = report
-            .regions
-            .iter()
-            .take(5)
-            .map(|(name, s)| format!("{name} ({:.0}%)", 100.0 * s))
-            .collect();
-        println!("  where: {}", places.join(", "));
-    }
-    if let Some((ratio, samples)) = report.noise.filter(|_| report.verdict == Verdict::Matches) {
-        let equivalent = f64::from(samples) / ratio.max(1e-9);
-        println!(
-            "  noise: {ratio:.2} times the variance of a render at the course's {samples} samples per pixel (as from about {:.0} samples)",
-            equivalent.min(1e6)
-        );
-    }
-    match report.hint {
-        Some(mistake) => println!("  hint ({}): {}", mistake.name, mistake.hint),
-        None if report.verdict == Verdict::Differs => println!(
-            "  hint: no classic mistake explains the difference; compare with `raycourse {} --out reference.png`",
-            stage_command(stage)
-        ),
-        None => {}
-    }
-}
-
-/// The command that renders `stage`, such as `s2 glass`.
-fn stage_command(stage: &Stage) -> String {
-    format!("s{} {}", stage.session, stage.name)
 }
 
 /// Grades the images of the folder `dir`: one row per stage of the build; or, for a

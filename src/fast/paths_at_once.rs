@@ -31,12 +31,12 @@ use crate::materials::Material;
 use crate::maths::Colour;
 use crate::scene::Scene;
 
-/// Whether [`row`] can render `scene`: every sphere diffuse (a mesh always is).
+/// Whether [`row`] can render `scene`: every sphere diffuse (a mesh always is), and
+/// shadow rays offset as the crate offsets them, not by a fixed `epsilon`.
 pub fn applies(scene: &Scene) -> bool {
-    scene
-        .spheres
-        .iter()
-        .all(|sphere| matches!(sphere.material, Material::Diffuse { .. }))
+    let diffuse =
+        |sphere: &crate::geometry::Sphere| matches!(sphere.material, Material::Diffuse { .. });
+    scene.spheres.iter().all(diffuse) && scene.settings.shadow_offset.is_none()
 }
 
 /// Renders row `row` of `scene`, whose spheres are `spheres`, into `line` (each

@@ -14,11 +14,17 @@ impl Tracer<'_> {
         self.scene.occluded(&shadow_ray, distance)
     }
 
-    /// The shadow ray from the hit point (pushed off its surface, see [`Hit::spawn`])
-    /// towards the point light, counted as one ray, and the distance to the light.
+    /// The shadow ray from the hit point (pushed off its surface, see [`Hit::spawn`],
+    /// or by the scene's fixed `epsilon` along the normal) towards the point light,
+    /// counted as one ray, and the distance to the light.
     pub fn shadow_ray(&mut self, hit: &Hit, light: &PointLight) -> (Ray, Real) {
         self.rays += 1;
-        hit.spawn_towards(light.position)
+        let Some(epsilon) = self.scene.settings.shadow_offset else {
+            return hit.spawn_towards(light.position);
+        };
+        let direction = (light.position - hit.point).normalize();
+        let ray = hit.spawn_with_epsilon(direction, epsilon);
+        (ray, ray.origin.distance(light.position))
     }
     // ANCHOR_END: in_shadow
 }

@@ -1,8 +1,6 @@
 //! Image textures: the albedo of a mesh read from a picture at the hit's texture
 //! coordinates.
 
-use std::path::Path;
-
 use crate::maths::{Colour, Real};
 
 /// How a texture is read between texel centres.
@@ -37,9 +35,11 @@ pub fn to_linear(c: u8) -> Real {
 // ANCHOR_END: to_linear
 
 impl Texture {
-    /// Reads the picture at `path` (PNG or JPEG).
-    pub fn load(path: &Path, filter: Filter) -> Result<Texture, String> {
-        let picture = image::open(path).map_err(|e| e.to_string())?.to_rgb8();
+    /// The picture held in `bytes` (a PNG or JPEG file's).
+    pub fn decode(bytes: &[u8], filter: Filter) -> Result<Texture, String> {
+        let picture = image::load_from_memory(bytes)
+            .map_err(|e| e.to_string())?
+            .to_rgb8();
         Ok(Texture {
             width: picture.width(),
             height: picture.height(),

@@ -21,4 +21,4 @@ pub mod uv;
 
 pub use brute_force::BruteForce;
 pub use mesh::{Mesh, MeshAlbedo, MeshHit, Search};
-pub use obj::{ObjData, Placement, read_obj};
+pub use obj::{ObjData, Placement, read_obj, read_obj_from};

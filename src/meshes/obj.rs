@@ -3,6 +3,7 @@
 use std::path::Path;
 use std::sync::Arc;
 
+use crate::files::{Disk, Files};
 use crate::geometry::{Aabb, TriangleTest};
 use crate::maths::{Colour, Mat3, Real, Vec3};
 use crate::meshes::{BruteForce, Mesh, MeshAlbedo};
@@ -33,15 +34,20 @@ pub struct Placement {
     pub translation: Vec3,
 }
 
+/// Reads the OBJ file at `path` from disk: [`read_obj_from`] with [`Disk`].
+pub fn read_obj(path: &Path) -> Result<ObjData, String> {
+    read_obj_from(path, &Disk)
+}
+
 // ANCHOR: obj_read
-/// Reads the OBJ file at `path` with tobj: polygons are split into triangles and
+/// Reads the OBJ file at `path` from `files` with tobj: polygons are split into triangles and
 /// every corner gets one index for position, normal and texture coordinates. The
 /// models of the file are merged; normals or texture coordinates are kept only if
 /// every model has them. A missing or broken MTL file only loses the texture. The
 /// file is read once: its lines are checked ([`check_lines`]), then tobj parses
 /// the same text.
-pub fn read_obj(path: &Path) -> Result<ObjData, String> {
-    let bytes = std::fs::read(path).map_err(|e| e.to_string())?;
+pub fn read_obj_from(path: &Path, files: &dyn Files) -> Result<ObjData, String> {
+    let bytes = files.read(path).map_err(|e| e.to_string())?;
     let text = match std::str::from_utf8(&bytes) {
         Ok(text) if !text.contains('\0') => text,
         _ => return Err("not a text OBJ file".into()),
@@ -54,7 +60,10 @@ pub fn read_obj(path: &Path) -> Result<ObjData, String> {
     };
     let folder = path.parent().unwrap_or(Path::new(""));
     let (models, materials) = tobj::load_obj_buf(&mut text.as_bytes(), &options, |mtl| {
-        tobj::load_mtl(folder.join(mtl))
+        let text = files
+            .read(&folder.join(mtl))
+            .map_err(|_| tobj::LoadError::OpenFileFailed)?;
+        tobj::load_mtl_buf(&mut text.as_slice())
     })
     .map_err(|e| e.to_string())?;
     let texture = materials.ok().and_then(|m| {

@@ -132,6 +132,9 @@ pub struct RenderSpec {
     /// Whether shadow rays are traced towards a point light (default false).
     #[serde(default)]
     pub shadows: bool,
+    /// The course's fixed offset `epsilon` of a shadow ray's origin along the normal
+    /// (session 2; absent: the offset that follows the hit point's rounding error).
+    pub shadow_offset: Option<NonNegative>,
     /// Whether diffuse surfaces reflect indirect light (session 3; default false).
     #[serde(default)]
     pub indirect: bool,

@@ -4,6 +4,7 @@
 use std::num::NonZeroU32;
 use std::path::Path;
 
+use crate::files::{Disk, Files};
 use crate::maths::Real;
 use crate::maths::values::{Finite, Positive};
 use crate::scene::Scene;
@@ -69,7 +70,8 @@ impl Overrides {
     }
 }
 
-/// Reads and checks the scene file at `path`, with `overrides` applied.
+/// Reads and checks the scene file at `path`, with `overrides` applied; the files it
+/// names are read from disk.
 pub fn load_scene(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
     let source = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
         path: path.to_owned(),
@@ -78,12 +80,24 @@ pub fn load_scene(path: &Path, overrides: &Overrides) -> Result<Scene, SceneErro
     parse_scene(&source, path, overrides)
 }
 
+/// Parses and checks scene-file text, with `overrides` applied; `path` names it in
+/// error messages, and files it refers to are read from disk next to it
+/// ([`parse_scene_from`] with [`Disk`]).
+pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
+    parse_scene_from(source, path, overrides, &Disk)
+}
+
 // ANCHOR: parse_scene
 /// Parses and checks scene-file text, with `overrides` applied; `path` names it in
-/// error messages and files it refers to are found next to it. The scene is built by
-/// the latest session of this build, each session starting from the scene of the one
-/// before and adding what it brings.
-pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
+/// error messages, and files it refers to are found next to it in `files`. The scene
+/// is built by the latest session of this build, each session starting from the
+/// scene of the one before and adding what it brings.
+pub fn parse_scene_from(
+    source: &str,
+    path: &Path,
+    overrides: &Overrides,
+    files: &dyn Files,
+) -> Result<Scene, SceneError> {
     check_materials(source, path)?;
     let mut file = read_file(source, path)?;
     overrides
@@ -95,7 +109,7 @@ pub fn parse_scene(source: &str, path: &Path, overrides: &Overrides) -> Result<S
         })?;
     check_sessions(&file, path)?;
     check_consistency(&file, path)?;
-    scene(&file, path)
+    scene(&file, path, files)
 }
 // ANCHOR_END: parse_scene
 

@@ -39,5 +39,5 @@ pub mod session7;
 
 pub use error::{SceneError, one_line};
 pub use features::SESSION;
-pub use load::{Overrides, load_scene, parse_scene};
-pub use stages::{Stage, find_stage, stage_names, stages};
+pub use load::{Overrides, load_scene, parse_scene, parse_scene_from};
+pub use stages::{Stage, crate_folder, find_stage, stage_names, stages};

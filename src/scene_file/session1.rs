@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use crate::camera::Camera;
+use crate::files::Files;
 use crate::geometry::Sphere;
 use crate::lights::{Light, PointLight};
 use crate::maths::Colour;
@@ -13,10 +14,11 @@ use crate::scene_file::format::SceneFile;
 
 // ANCHOR: scene
 /// The scene as session 1 reads `file`: the camera, the spheres, a point light and
-/// the render settings. Session 1 reads no other file, so `_path` is not used, and
-/// nothing can go wrong once the file is checked; the signature is that of every
-/// session's `scene`, the later ones reading meshes and textures next to `path`.
-pub fn scene(file: &SceneFile, _path: &Path) -> Result<Scene, SceneError> {
+/// the render settings. Session 1 reads no other file, so `_path` and `_files` are
+/// not used, and nothing can go wrong once the file is checked; the signature is
+/// that of every session's `scene`, the later ones reading meshes and textures next
+/// to `path`, from `files`.
+pub fn scene(file: &SceneFile, _path: &Path, _files: &dyn Files) -> Result<Scene, SceneError> {
     let r = &file.render;
     let fov = file.camera.fov.0.to_radians();
     let camera = Camera::new(file.camera.position.0, fov, r.width.get(), r.height.get());
@@ -50,6 +52,7 @@ pub fn settings(file: &SceneFile) -> Settings {
         seed: r.seed,
         gamma: r.gamma.map_or(1.0, |g| g.0),
         shadows: r.shadows,
+        shadow_offset: r.shadow_offset.map(|e| e.0),
         indirect: r.indirect,
         light_sampling: r.light_sampling,
         russian_roulette: r.russian_roulette.map(|p| p.0),

@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use crate::camera::PixelFilter;
+use crate::files::Files;
 use crate::scene::Scene;
 use crate::scene::beyond::Beyond;
 use crate::scene::beyond::Sampler;
@@ -14,8 +15,8 @@ use crate::scene_file::{SceneError, session1};
 /// camera rays (`camera.antialiasing`, its standard deviation in pixels), the
 /// sampler (`render.sampler`), adaptive sampling's target (`render.noise`) and the
 /// fast engine (`render.fast`), all three beyond the course.
-pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
-    let mut scene = session1::scene(file, path)?;
+pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, SceneError> {
+    let mut scene = session1::scene(file, path, files)?;
     if let Some(sigma) = file.camera.antialiasing {
         scene.camera.filter = PixelFilter::Gaussian { sigma: sigma.0 };
     }

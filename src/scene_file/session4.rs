@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use crate::camera::{Lens, ThinLens};
+use crate::files::Files;
 use crate::lights::{Light, SphereLight};
 use crate::scene::Scene;
 use crate::scene_file::format::SceneFile;
@@ -11,8 +12,8 @@ use crate::scene_file::{SceneError, session3};
 /// The scene of session 3 with what session 4 reads in `file`: a light with a radius
 /// becomes a sphere light, whose body joins the spheres; `camera.lens` makes a thin
 /// lens.
-pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
-    let mut scene = session3::scene(file, path)?;
+pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, SceneError> {
+    let mut scene = session3::scene(file, path, files)?;
     if let Some(light) = &file.light
         && let Some(radius) = light.radius
     {

@@ -5,24 +5,25 @@ use std::path::Path;
 use std::sync::Arc;
 
 use crate::acceleration::BoundingBox;
+use crate::files::Files;
 use crate::geometry::TriangleTest;
 use crate::maths::{Colour, Mat3, Vec3};
-use crate::meshes::{Mesh, MeshAlbedo, Placement, read_obj};
+use crate::meshes::{Mesh, MeshAlbedo, Placement, read_obj_from};
 use crate::scene::Scene;
 use crate::scene_file::format::{AccelerationSpec, MeshSpec, SceneFile, TriangleTestSpec};
 use crate::scene_file::{SceneError, one_line, session4};
 
 /// The scene of session 4 with what session 5 reads in `file`: its meshes, their OBJ
-/// files found next to the scene file at `path`, each placed, coloured, tested with the
+/// files found next to the scene file at `path` in `files`, each placed, coloured, tested with the
 /// file's ray-triangle test, and searched by brute force or behind its bounding box.
-pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
-    let mut scene = session4::scene(file, path)?;
+pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, SceneError> {
+    let mut scene = session4::scene(file, path, files)?;
     let test = match file.render.triangle_test.unwrap_or_default() {
         TriangleTestSpec::MollerTrumbore => TriangleTest::MollerTrumbore,
         TriangleTestSpec::Watertight => TriangleTest::Watertight,
     };
     for spec in &file.meshes {
-        let mut mesh = load_mesh(spec, path)?;
+        let mut mesh = load_mesh(spec, path, files)?;
         mesh.triangle_test = test;
         if file.render.acceleration == AccelerationSpec::Bbox {
             mesh.search = Arc::new(BoundingBox);
@@ -32,11 +33,11 @@ pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
     Ok(scene)
 }
 
-/// The mesh of `spec`, its OBJ file read next to the scene file at `path`, placed
-/// by `p' = rotation (scale p) + translation` and given its albedo.
-pub fn load_mesh(spec: &MeshSpec, path: &Path) -> Result<Mesh, SceneError> {
+/// The mesh of `spec`, its OBJ file read from `files` next to the scene file at
+/// `path`, placed by `p' = rotation (scale p) + translation` and given its albedo.
+pub fn load_mesh(spec: &MeshSpec, path: &Path, files: &dyn Files) -> Result<Mesh, SceneError> {
     let obj = path.parent().unwrap_or(Path::new("")).join(&spec.obj);
-    let data = read_obj(&obj).map_err(|e| SceneError::Asset {
+    let data = read_obj_from(&obj, files).map_err(|e| SceneError::Asset {
         scene: path.to_owned(),
         file: obj.clone(),
         message: format!("cannot load the mesh: {}", one_line(&e)),

@@ -7,6 +7,7 @@ use std::sync::Arc;
 
 use crate::acceleration::Bvh;
 use crate::fast::FastBvh;
+use crate::files::Files;
 use crate::scene::Scene;
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
 use crate::scene_file::{SceneError, session5};
@@ -16,8 +17,8 @@ use crate::scene_file::{SceneError, session5};
 /// `render.fast` the fast engine's, with leaves of at most `render.leaf_size`
 /// triangles, 8 by default), and
 /// shaded with its vertex normals only where `smooth_normals` says so.
-pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
-    let mut scene = session5::scene(file, path)?;
+pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, SceneError> {
+    let mut scene = session5::scene(file, path, files)?;
     let leaf_size = file.render.leaf_size.map_or(8, |l| l.get());
     for (mesh, spec) in scene.meshes.iter_mut().zip(&file.meshes) {
         match file.render.acceleration {

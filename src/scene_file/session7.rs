@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use crate::camera::aim::aim;
+use crate::files::Files;
 use crate::materials::texture::{Filter, Texture};
 use crate::maths::Vec3;
 use crate::meshes::{Mesh, MeshAlbedo};
@@ -12,11 +13,11 @@ use crate::scene_file::{SceneError, one_line, session6};
 
 /// The scene of session 6 with what session 7 reads in `file`: textured meshes, and a
 /// camera aimed at `camera.look_at`, raised by `camera.plunge` degrees around it.
-pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
-    let mut scene = session6::scene(file, path)?;
+pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, SceneError> {
+    let mut scene = session6::scene(file, path, files)?;
     for (mesh, spec) in scene.meshes.iter_mut().zip(&file.meshes) {
         let asked = spec.textured || spec.texture.is_some() || spec.texture_filter.is_some();
-        if asked && let Some(texture) = mesh_texture(spec, mesh, path)? {
+        if asked && let Some(texture) = mesh_texture(spec, mesh, path, files)? {
             mesh.albedo = MeshAlbedo::Texture(texture);
         }
     }
@@ -37,14 +38,15 @@ pub fn scene(file: &SceneFile, path: &Path) -> Result<Scene, SceneError> {
     Ok(scene)
 }
 
-/// The texture a scene file's mesh asks for: its own `texture` file (next to the
-/// scene file at `scene`), else the OBJ material's `map_Kd`, when `textured`. `None` when there is
-/// neither, or when the OBJ file has no texture coordinates: texturing is then off
-/// for that mesh.
+/// The texture a scene file's mesh asks for, read from `files`: its own `texture`
+/// file (next to the scene file at `scene`), else the OBJ material's `map_Kd`, when
+/// `textured`. `None` when there is neither, or when the OBJ file has no texture
+/// coordinates: texturing is then off for that mesh.
 pub fn mesh_texture(
     spec: &MeshSpec,
     mesh: &Mesh,
     scene: &Path,
+    files: &dyn Files,
 ) -> Result<Option<Texture>, SceneError> {
     let file = match &spec.texture {
         Some(name) => Some(scene.parent().unwrap_or(Path::new("")).join(name)),
@@ -57,7 +59,10 @@ pub fn mesh_texture(
         Some(FilterSpec::Bilinear) => Filter::Bilinear,
         Some(FilterSpec::Nearest) | None => Filter::Nearest,
     };
-    Texture::load(&file, filter)
+    files
+        .read(&file)
+        .map_err(|e| e.to_string())
+        .and_then(|bytes| Texture::decode(&bytes, filter))
         .map(Some)
         .map_err(|e| SceneError::Asset {
             scene: scene.to_owned(),

@@ -65,6 +65,12 @@ const KEYS: &[SessionKey] = &[
     ),
     (|f| f.render.shadows, "render.shadows", 2, "shadow rays"),
     (
+        |f| f.render.shadow_offset.is_some(),
+        "render.shadow_offset",
+        2,
+        "a fixed shadow-ray offset",
+    ),
+    (
         |f| f.render.indirect,
         "render.indirect",
         3,

@@ -3,9 +3,10 @@
 
 use std::path::Path;
 
+use crate::files::{Disk, Files};
 use crate::scene::Scene;
 use crate::scene_file::features::SESSION;
-use crate::scene_file::{Overrides, SceneError, parse_scene};
+use crate::scene_file::{Overrides, SceneError, parse_scene_from};
 
 /// One stage of the course: a figure of the course notes and the scene file that
 /// renders it.
@@ -148,14 +149,31 @@ pub fn find_stage(session: u32, name: &str) -> Option<&'static Stage> {
 
 impl Stage {
     /// The stage's scene, at the course's settings but for `overrides`. Files the
-    /// scene refers to (meshes, textures) are found in this crate's folder.
+    /// scene refers to (meshes, textures) are read from this crate's folder.
     pub fn scene(&self, overrides: &Overrides) -> Result<Scene, SceneError> {
-        parse_scene(self.source, &self.file(), overrides)
+        self.scene_from(overrides, &Disk)
+    }
+
+    /// The stage's scene, at the course's settings but for `overrides`, the files it
+    /// refers to read from `files` under the names [`Stage::file`] gives them.
+    pub fn scene_from(
+        &self,
+        overrides: &Overrides,
+        files: &dyn Files,
+    ) -> Result<Scene, SceneError> {
+        parse_scene_from(self.source, &self.file(), overrides, files)
     }
 
     /// The scene file's path in this crate's folder, next to which the files it
     /// refers to are found.
     pub fn file(&self) -> std::path::PathBuf {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join(self.path)
+        crate_folder().join(self.path)
     }
+}
+
+/// The folder of this crate, where the stages' scene files and the assets they name
+/// are: `crate_folder().join("assets/spot/spot.obj")` is the name under which a
+/// stage reads the cow.
+pub fn crate_folder() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
 }

@@ -66,6 +66,7 @@ fn checked(stage: &Stage, image: &RgbImage, cache: &Path) -> Report {
         stage,
         size: image.dimensions(),
         cache,
+        files: &raycourse::Disk,
         progress: &|_| {},
     };
     check(&source, image, false).unwrap()
@@ -126,6 +127,7 @@ fn every_deterministic_stage_passes_as_a_jpeg_of_quality_85() {
             stage,
             size: read.dimensions(),
             cache: &cache,
+            files: &raycourse::Disk,
             progress: &|_| {},
         };
         check(&source, &read, true).unwrap()

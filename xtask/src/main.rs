@@ -7,13 +7,17 @@
 //!   exercise of the build kept, stubbed while `RAYCOURSE_STUB` names it, for CI);
 //! - `cargo xtask exercises`: every exercise, its function, file and test;
 //! - `cargo xtask mdbook-listings`: the book's preprocessor that takes each session
-//!   chapter's listings from that session's view (mdBook runs it).
+//!   chapter's listings from that session's view (mdBook runs it);
+//! - `cargo xtask book [--open]`: the live book, the crate compiled to WebAssembly
+//!   for its demos and check page, in `book/build/` (`--open`: served and opened).
 
+mod book;
 mod cfg;
 mod exercise;
 mod listings;
 mod manifest;
 mod prune;
+mod serve;
 mod source;
 mod student;
 mod view;
@@ -40,7 +44,7 @@ fn session(text: &str) -> Result<u32, String> {
 fn run(args: &[String]) -> Result<(), String> {
     let usage = "usage: cargo xtask view sN DIR | cargo xtask views DIR | \
                  cargo xtask exercise sN DIR [--only sN.K] [--switch] | cargo xtask exercises | \
-                 cargo xtask mdbook-listings";
+                 cargo xtask mdbook-listings | cargo xtask book [--open]";
     match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["view", n, dir] => {
             let n = session(n)?;
@@ -65,6 +69,8 @@ fn run(args: &[String]) -> Result<(), String> {
         }
         ["mdbook-listings", "supports", _] => Ok(()),
         ["mdbook-listings"] => listings::preprocess(&root()),
+        ["book"] => book::build(&root(), false),
+        ["book", "--open"] => book::build(&root(), true),
         _ => Err(usage.into()),
     }
 }

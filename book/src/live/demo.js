@@ -1,0 +1,305 @@
+// The live demo of a session chapter: `<div class="live-demo" data-session="N">`
+// becomes a canvas rendered by the crate itself, compiled to WebAssembly and run in
+// one Web Worker per core (workers.js), with the controls that session teaches. Each
+// demo starts from its stage's own scene file; a control edits keys of that file,
+// and the image is rendered again: first with one sample per pixel, then with all of
+// them, band by band. `?live-size=64` in the page's address renders smaller (the
+// book's browser tests use it).
+(function () {
+  "use strict";
+  const { startWorkers, startEach, element, duration } = window.raycourseLive;
+
+  // A control: its id, its label, how it reads its starting value from a stage's
+  // scene file (`undefined`: the stage has nothing it could change, and it is
+  // hidden), and the keys of the file it changes (`edit(value, values)`, where
+  // `values` holds every control's value by id).
+  const range = (id, label, [min, max, step], read, edit, show) =>
+    ({ id, kind: "range", label, min, max, step, read, edit, show });
+  const toggle = (id, label, read, edit) => ({ id, kind: "checkbox", label, read, edit });
+  const choice = (id, label, options, read, edit) => ({ id, kind: "select", label, options, read, edit });
+
+  const light = (values) => ({ "light.position": [values.lightX, values.lightY, values.lightZ] });
+  const lightAxis = (id, axis, limits) =>
+    range(id, `light ${"xyz"[axis]}`, limits, (f) => f.light && f.light.position[axis], (_, v) => light(v));
+  const centre = (f) => (f.spheres && f.spheres[0] && f.spheres[0].material) || {};
+  const materialName = (f) => {
+    const m = centre(f);
+    return m === "mirror" ? "mirror" : m.glass !== undefined ? "glass" : m.diffuse ? "diffuse" : undefined;
+  };
+  const material = (v) =>
+    v.material === "mirror" ? "mirror" : v.material === "glass" ? { glass: v.index } : { diffuse: [1, 1, 1] };
+  const offsets = [
+    ["robust", "past the point's rounding error (the crate's)"],
+    ["0.1", "ε = 0.1"],
+    ["0.001", "ε = 0.001"],
+    ["1e-9", "ε = 10⁻⁹"],
+    ["0", "ε = 0: shadow acne"],
+  ];
+  const samples = range("samples", "samples per pixel", [1, 256, 1], (f) => f.render.samples || 1, () => ({}));
+  const accelerations = (names) =>
+    choice("acceleration", "search of the mesh", names, (f) => f.render.acceleration || "none",
+      (v) => ({ "render.acceleration": v }));
+  const meshes = [["none", "brute force"], ["bbox", "bounding box"], ["bvh", "BVH"]];
+
+  // The controls that each session teaches, and the size its demo renders at.
+  const SESSIONS = {
+    1: { size: 256, controls: [
+      range("fov", "field of view (degrees)", [20, 120, 1], (f) => f.camera.fov, (x) => ({ "camera.fov": x })),
+      lightAxis("lightX", 0, [-50, 50, 1]), lightAxis("lightY", 1, [-9, 55, 1]), lightAxis("lightZ", 2, [-55, 55, 1]),
+      range("albedo", "albedo of the sphere", [0, 1, 0.05], (f) => f.light && centre(f).diffuse && centre(f).diffuse[0],
+        (x) => ({ "spheres.0.material": { diffuse: [x, x, x] } })),
+    ] },
+    2: { size: 256, controls: [
+      toggle("gamma", "gamma correction (2.2)", (f) => f.render.gamma !== undefined,
+        (on) => ({ "render.gamma": on ? 2.2 : null })),
+      choice("offset", "shadow ray's offset", offsets, (f) => (f.render.shadows ? "robust" : undefined),
+        (x) => ({ "render.shadow_offset": x === "robust" ? null : Number(x) })),
+      choice("material", "the centre sphere", [["diffuse", "diffuse"], ["mirror", "mirror"], ["glass", "glass"]],
+        (f) => (f.render.shadows ? materialName(f) : undefined), (_, v) => ({ "spheres.0.material": material(v) })),
+      range("index", "refractive index", [1, 2.5, 0.05], (f) => (f.render.shadows ? centre(f).glass || 1.5 : undefined),
+        (_, v) => ({ "spheres.0.material": material(v) }), (v) => v.material === "glass"),
+    ] },
+    3: { size: 256, controls: [
+      samples,
+      range("bounces", "bounces", [0, 10, 1], (f) => (f.render.bounces === undefined ? 5 : f.render.bounces),
+        (x) => ({ "render.bounces": x })),
+      toggle("antialiasing", "antialiasing", (f) => f.camera.antialiasing !== undefined,
+        (on) => ({ "camera.antialiasing": on ? 0.5 : null })),
+    ] },
+    4: { size: 256, controls: [
+      samples,
+      range("radius", "light radius", [0.5, 15, 0.5], (f) => f.light && f.light.radius, (x) => ({ "light.radius": x })),
+      toggle("sampling", "light sampling", (f) => (f.light && f.light.radius ? !!f.render.light_sampling : undefined),
+        (on) => ({ "render.light_sampling": on })),
+      range("aperture", "aperture", [0.1, 5, 0.1], (f) => f.camera.lens && f.camera.lens.aperture,
+        (_, v) => ({ "camera.lens": { aperture: v.aperture, focus: v.focus } })),
+      range("focus", "focus distance", [20, 90, 1], (f) => f.camera.lens && f.camera.lens.focus,
+        (_, v) => ({ "camera.lens": { aperture: v.aperture, focus: v.focus } })),
+    ] },
+    5: { size: 128, cost: true, controls: [samples, accelerations(meshes.slice(0, 2))] },
+    6: { size: 256, cost: true, controls: [
+      samples, accelerations(meshes),
+      toggle("smooth", "smooth normals", (f) => !!f.meshes[0].smooth_normals, (on) => ({ "meshes.0.smooth_normals": on })),
+    ] },
+    7: { size: 256, orbit: true, controls: [
+      samples,
+      range("plunge", "plunge (degrees); drag the image to orbit", [-10, 80, 1], (f) => f.camera.plunge || 0, () => ({})),
+      toggle("texture", "texture", (f) => !!f.meshes[0].textured, (on) => ({ "meshes.0.textured": on })),
+    ] },
+  };
+
+  /** The page's `?live-size=N`, if any. */
+  const sizeOverride = Number(new URLSearchParams(location.search).get("live-size")) || 0;
+  const BAND = 8;
+
+  class LiveDemo {
+    constructor(root) {
+      this.root = root;
+      this.session = Number(root.dataset.session);
+      this.setup = SESSIONS[this.session];
+      this.size = sizeOverride || this.setup.size;
+      this.job = 0;
+      this.times = {};
+      this.workers = startWorkers((message, worker) => this.received(message, worker));
+      this.workers[0].postMessage({ kind: "stages" });
+      this.status("loading the renderer…");
+    }
+
+    status(text, state) {
+      this.root.dataset.state = state || "working";
+      (this.statusLine || this.root).textContent = text;
+    }
+
+    received(message, worker) {
+      if (message.kind === "stages") return this.build(message.stages);
+      if (message.job !== undefined && message.job !== this.job) return;
+      if (message.kind === "rows") this.paint(message);
+      if (message.kind === "pass") this.passDone(message);
+      if (message.kind === "cost") this.costDone(message);
+      if (message.kind === "error") this.status(`error: ${message.message}`, "error");
+    }
+
+    /** Builds the stage list, the canvases and the controls once the stages are known. */
+    build(stages) {
+      this.stages = stages.filter((s) => s.session === this.session);
+      this.root.textContent = "";
+      this.select = element("select", { className: "live-stage", onchange: () => this.pickStage() },
+        ...this.stages.map((s) => element("option", { value: s.name, textContent: `${s.name}: ${s.title}` })));
+      this.canvas = element("canvas", { className: "live-image", width: this.size, height: this.size });
+      const images = element("div", { className: "live-images" }, this.canvas);
+      if (this.setup.cost) {
+        this.costCanvas = element("canvas", { className: "live-cost", width: this.size, height: this.size });
+        this.costCaption = element("figcaption", { textContent: "cost: tests per camera ray" });
+        images.append(element("figure", {}, this.costCanvas, this.costCaption));
+      }
+      if (this.setup.orbit) this.orbit();
+      this.controls = element("div", { className: "live-controls" });
+      this.statusLine = element("p", { className: "live-status" });
+      this.timesTable = element("table", { className: "live-times" });
+      this.functions = element("code", { className: "live-functions" });
+      const ran = element("details", {}, element("summary", { textContent: "the course functions this image ran" }), this.functions);
+      this.root.append(element("p", {}, "stage ", this.select), images, this.controls, this.statusLine, this.timesTable, ran);
+      this.pickStage();
+    }
+
+    /** Starts the chosen stage from its own scene file. */
+    pickStage() {
+      this.stage = this.stages.find((s) => s.name === this.select.value);
+      this.values = {};
+      this.start = {};
+      this.azimuth = 0;
+      this.controls.textContent = "";
+      this.inputs = [];
+      for (const control of this.setup.controls) {
+        const value = control.read(this.stage.file);
+        if (value === undefined) continue;
+        this.values[control.id] = this.start[control.id] = value;
+        this.controls.append(this.input(control, value));
+      }
+      this.showControls();
+      this.render();
+    }
+
+    /** The input of `control`, starting at `value`. */
+    input(control, value) {
+      const shown = element("output", { textContent: String(value) });
+      let input;
+      if (control.kind === "select") {
+        input = element("select", {}, ...control.options.map(([v, label]) => element("option", { value: v, textContent: label })));
+        input.value = value;
+      } else {
+        input = element("input", { type: control.kind, min: control.min, max: control.max, step: control.step });
+        if (control.kind === "checkbox") input.checked = value; else input.value = value;
+      }
+      input.dataset.control = control.id;
+      const changed = () => {
+        const v = control.kind === "checkbox" ? input.checked : control.kind === "range" ? Number(input.value) : input.value;
+        this.values[control.id] = v;
+        shown.textContent = String(v);
+        this.showControls();
+        this.render();
+      };
+      input.addEventListener(control.kind === "range" ? "input" : "change", changed);
+      const label = element("label", { className: "live-control" }, `${control.label} `, input);
+      if (control.kind === "range") label.append(" ", shown);
+      label.liveControl = control;
+      this.inputs.push(label);
+      return label;
+    }
+
+    showControls() {
+      for (const label of this.inputs) {
+        label.hidden = label.liveControl.show ? !label.liveControl.show(this.values) : false;
+      }
+    }
+
+    /** The edits of the stage's scene file that the controls ask for. */
+    edits() {
+      const edits = {};
+      for (const control of this.setup.controls) {
+        if (!(control.id in this.values) || this.values[control.id] === this.start[control.id]) continue;
+        Object.assign(edits, control.edit(this.values[control.id], this.values));
+      }
+      if (this.setup.orbit && (this.azimuth !== 0 || this.values.plunge !== this.start.plunge)) {
+        const a = this.azimuth * Math.PI / 180;
+        const [x, y, z] = this.stage.file.camera.position;
+        const r = Math.hypot(x, y, z);
+        Object.assign(edits, {
+          "camera.look_at": [0, 0, 0],
+          "camera.position": [r * Math.sin(a), 0, r * Math.cos(a)],
+          "camera.plunge": this.values.plunge,
+        });
+      }
+      return edits;
+    }
+
+    /** Renders the scene again: one sample per pixel first, then all of them. */
+    render() {
+      this.job += 1;
+      const samples = this.values.samples || this.stage.file.render.samples || 1;
+      const passes = samples > 1 ? [1, samples] : [1];
+      this.pending = { passes, bands: Math.ceil(this.size / BAND), done: 0, rays: 0, started: performance.now() };
+      this.edited = this.edits();
+      this.status(`rendering ${this.stage.name}…`);
+      const count = this.workers.length;
+      this.workers.forEach((worker, i) => {
+        const bands = [];
+        for (let first = i * BAND; first < this.size; first += count * BAND) bands.push(first);
+        worker.postMessage({ kind: "render", job: this.job, stage: this.stage.name, edits: this.edited,
+          width: this.size, height: this.size, passes, bands, band: BAND });
+      });
+    }
+
+    paint(message) {
+      const rows = message.rgba.length / (4 * this.size);
+      const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, rows);
+      this.canvas.getContext("2d").putImageData(pixels, 0, message.first);
+    }
+
+    /** One worker finished a pass; when all have, the pass's time is shown. */
+    passDone(message) {
+      const p = this.pending;
+      p.rays += message.rays;
+      p[message.pass] = (p[message.pass] || 0) + 1;
+      if (p[message.pass] < this.workers.length) return;
+      const ms = performance.now() - p.started;
+      const samples = p.passes[message.pass];
+      const first = message.pass === 0;
+      if (first) this.root.dataset.firstMs = Math.round(ms);
+      this.functions.textContent = message.functions.join(", ");
+      const last = message.pass === p.passes.length - 1;
+      const text = `${this.stage.name}, ${this.size} × ${this.size}: ${samples} sample${samples > 1 ? "s" : ""} per pixel in ${duration(ms)}`;
+      this.status(last ? `${text} (${this.workers.length} workers)` : `${text}; refining…`, last ? "done" : "working");
+      if (!last) return;
+      this.root.dataset.totalMs = Math.round(ms);
+      this.root.dataset.edits = JSON.stringify(this.edited);
+      if (this.setup.cost) this.record(ms, samples);
+    }
+
+    /** For the mesh sessions: the time of this search, and its cost image. */
+    record(ms, samples) {
+      const search = this.values.acceleration;
+      this.times[search] = { ms, samples, size: this.size };
+      this.workers[0].postMessage({ kind: "cost", job: this.job, stage: this.stage.name, edits: this.edited,
+        width: this.size, height: this.size });
+    }
+
+    costDone(message) {
+      this.costCanvas.height = message.height;
+      const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, message.height);
+      this.costCanvas.getContext("2d").putImageData(pixels, 0, 0);
+      this.costCaption.textContent = `cost: ${message.mean.toFixed(1)} tests per camera ray on average`;
+      this.times[this.values.acceleration].cost = message.mean;
+      this.showTimes();
+    }
+
+    showTimes() {
+      const rows = Object.entries(this.times).map(([search, t]) => element("tr", {},
+        element("td", { textContent: meshes.find((m) => m[0] === search)[1] }),
+        element("td", { textContent: `${duration(t.ms)} (${t.samples} samples, ${t.size} × ${t.size})` }),
+        element("td", { textContent: t.cost === undefined ? "" : `${t.cost.toFixed(1)} tests per camera ray` })));
+      this.timesTable.replaceChildren(element("tr", {}, element("th", { textContent: "search" }),
+        element("th", { textContent: "time" }), element("th", { textContent: "cost" })), ...rows);
+    }
+
+    /** Session 7: dragging the image turns the camera around the cow and raises it. */
+    orbit() {
+      let from = null;
+      this.canvas.style.cursor = "grab";
+      this.canvas.addEventListener("pointerdown", (e) => { from = [e.clientX, e.clientY]; this.canvas.setPointerCapture(e.pointerId); });
+      this.canvas.addEventListener("pointerup", () => { from = null; });
+      this.canvas.addEventListener("pointermove", (e) => {
+        if (!from) return;
+        this.azimuth -= (e.clientX - from[0]) * 0.5;
+        const plunge = Math.max(-10, Math.min(80, this.values.plunge + (e.clientY - from[1]) * 0.5));
+        from = [e.clientX, e.clientY];
+        this.values.plunge = Math.round(plunge);
+        const input = this.controls.querySelector('[data-control="plunge"]');
+        if (input) { input.value = this.values.plunge; input.nextSibling.nextSibling.textContent = String(this.values.plunge); }
+        this.render();
+      });
+    }
+  }
+
+  startEach(".live-demo[data-session]", "the live demo", (root) => { root.liveDemo = new LiveDemo(root); });
+})();

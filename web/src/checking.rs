@@ -1,0 +1,90 @@
+//! `raycourse check` in a page: a student's image of a stage, dropped on the book's
+//! check page, compared with the stage's reference rendered in the page by the same
+//! code as the command's. Nothing leaves the page.
+
+use raycourse::check::expected::Source;
+use raycourse::check::report::{Verdict, check};
+use wasm_bindgen::prelude::*;
+
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use crate::assets;
+
+/// What the checker says of an image.
+#[wasm_bindgen]
+pub struct Checked {
+    matches: bool,
+    lines: Vec<String>,
+    difference: Vec<u8>,
+}
+
+#[wasm_bindgen]
+impl Checked {
+    /// Whether the image is the stage's.
+    pub fn matches(&self) -> bool {
+        self.matches
+    }
+
+    /// The report, as the lines `raycourse check` prints.
+    pub fn text(&self) -> String {
+        self.lines.join("\n")
+    }
+
+    /// The picture of the differences (`check --diff`) as a PNG file's bytes.
+    pub fn difference_png(&self) -> Vec<u8> {
+        self.difference.clone()
+    }
+}
+
+#[wasm_bindgen]
+extern "C" {
+    /// The page's progress bar: the worker's global `raycourseProgress(rows)`. An
+    /// imported function, not a closure over a JavaScript value, so that the render
+    /// may call it from any of its (here, one) threads.
+    #[wasm_bindgen(js_name = raycourseProgress)]
+    fn report_progress(rows: f64);
+}
+
+/// Checks the image in `file` (a PNG or JPEG file's bytes) against the stage called
+/// `stage`, as `raycourse check STAGE IMAGE` does, telling the worker's
+/// `raycourseProgress` how many rows of the reference are rendered.
+#[wasm_bindgen]
+pub fn check_image(stage: &str, file: &[u8]) -> Result<Checked, JsError> {
+    checked(stage, file, &|rows| report_progress(rows as f64)).map_err(|e| JsError::new(&e))
+}
+
+/// The checker's answer on `file` for `stage`, or what is wrong with the input;
+/// `progress` is told the rows of the reference rendered so far.
+pub fn checked(
+    stage: &str,
+    file: &[u8],
+    progress: &(dyn Fn(u64) + Sync),
+) -> Result<Checked, String> {
+    let stage = crate::find(stage)?;
+    let format = image::guess_format(file).ok();
+    let lossy = format == Some(image::ImageFormat::Jpeg);
+    let image = image::load_from_memory(file)
+        .map_err(|e| format!("not a PNG or JPEG image that can be read: {e}"))?
+        .to_rgb8();
+    let rows = AtomicU64::new(0);
+    let count = |_| progress(rows.fetch_add(1, Ordering::Relaxed) + 1);
+    let files = assets::stage_files();
+    let source = Source {
+        stage,
+        size: image.dimensions(),
+        cache: std::path::Path::new(""),
+        files: &files,
+        progress: &count,
+    };
+    let report = check(&source, &image, lossy).map_err(|e| e.to_string())?;
+    let picture = report.difference_image(&image);
+    Ok(Checked {
+        matches: report.verdict == Verdict::Matches,
+        lines: report.lines(stage),
+        difference: raycourse::render::png::encode_rgb8(
+            picture.as_raw(),
+            picture.width(),
+            picture.height(),
+        ),
+    })
+}

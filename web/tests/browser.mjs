@@ -1,0 +1,208 @@
+// The live book's pages in headless Chromium (Debian's `chromium`, driven by
+// puppeteer-core). Run after `cargo xtask book` and `cargo build --release`:
+//
+//   node web/tests/browser.mjs           the tests
+//   node web/tests/browser.mjs --speed   the demos' times at 256 x 256, for the book
+//
+// Each session chapter's demo renders its first stage at a small size; the pixels
+// read back from its canvas must pass `raycourse check` for that stage, and moving a
+// control must change them. The check page must pass a correct image, fail a
+// gamma-less one with the gamma hint, and refuse a file that is not an image. A page
+// that throws or logs an error fails its test.
+import { execFileSync, spawnSync } from "node:child_process";
+import fs from "node:fs";
+import http from "node:http";
+import os from "node:os";
+import path from "node:path";
+import puppeteer from "puppeteer-core";
+
+const root = path.resolve(import.meta.dirname, "../..");
+const book = path.join(root, "book/build");
+const raycourse = process.env.RAYCOURSE || path.join(root, "target/release/raycourse");
+const scratch = fs.mkdtempSync(path.join(os.tmpdir(), "raycourse-browser-"));
+const TYPES = { ".html": "text/html", ".js": "text/javascript", ".css": "text/css", ".wasm": "application/wasm",
+  ".svg": "image/svg+xml", ".png": "image/png", ".woff2": "font/woff2" };
+
+/** Serves the built book on 127.0.0.1; resolves to its address. */
+function serve() {
+  const server = http.createServer((request, response) => {
+    const name = decodeURIComponent(new URL(request.url, "http://x").pathname);
+    const file = path.join(book, path.normalize(name).replace(/^(\.\.[/\\])+/, ""));
+    fs.readFile(file.endsWith("/") ? path.join(file, "index.html") : file, (error, body) => {
+      response.writeHead(error ? 404 : 200, { "Content-Type": TYPES[path.extname(file)] || "application/octet-stream" });
+      response.end(error ? "not found" : body);
+    });
+  });
+  return new Promise((resolve) => server.listen(0, "127.0.0.1", () => resolve([server, `http://127.0.0.1:${server.address().port}/`])));
+}
+
+/** A new page that records what it throws and logs as an error. */
+async function open(browser, url) {
+  const page = await browser.newPage();
+  page.errors = [];
+  page.on("pageerror", (error) => page.errors.push(error.message));
+  page.on("console", (message) => message.type() === "error" && page.errors.push(message.text()));
+  await page.goto(url);
+  return page;
+}
+
+/** Waits until the demo of `page` has rendered all its samples; returns its state. */
+async function rendered(page, timeout = 300000) {
+  await page.waitForSelector('.live-demo[data-state="done"], .live-demo[data-state="error"]', { timeout });
+  return page.evaluate(() => {
+    const demo = document.querySelector(".live-demo");
+    return { state: demo.dataset.state, status: demo.querySelector(".live-status").textContent,
+      png: demo.querySelector("canvas.live-image").toDataURL("image/png"), stage: demo.querySelector("select.live-stage").value,
+      firstMs: Number(demo.dataset.firstMs), totalMs: Number(demo.dataset.totalMs) };
+  });
+}
+
+/** Moves the first control of the demo of `page` away from where it is. */
+function moveControl(page) {
+  return page.evaluate(() => {
+    const input = [...document.querySelectorAll(".live-controls input, .live-controls select")].find((i) => !i.closest("label").hidden);
+    if (input.type === "checkbox") { input.checked = !input.checked; input.dispatchEvent(new Event("change")); return input.dataset.control; }
+    if (input.tagName === "SELECT") { input.selectedIndex = (input.selectedIndex + 1) % input.options.length; input.dispatchEvent(new Event("change")); return input.dataset.control; }
+    input.value = Number(input.value) === Number(input.min) ? input.max : input.min;
+    input.dispatchEvent(new Event("input"));
+    return input.dataset.control;
+  });
+}
+
+/** Writes the data URL `png` to a file; returns its path. */
+function save(png, name) {
+  const file = path.join(scratch, name);
+  fs.writeFileSync(file, Buffer.from(png.split(",")[1], "base64"));
+  return file;
+}
+
+/** `raycourse ARGS...`: its exit code and output. */
+function command(...args) {
+  const run = spawnSync(raycourse, args, { encoding: "utf8" });
+  return { code: run.status, output: `${run.stdout}${run.stderr}` };
+}
+
+const results = [];
+async function test(name, body) {
+  try {
+    await body();
+    results.push([name, null]);
+    console.log(`ok: ${name}`);
+  } catch (error) {
+    results.push([name, error]);
+    console.log(`FAILED: ${name}\n  ${String(error.stack || error).split("\n").join("\n  ")}`);
+  }
+}
+
+function assert(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+/** Each session's demo: the stage's image, and a control that changes it. */
+async function demos(browser, base) {
+  const sizes = { 1: 64, 2: 64, 3: 32, 4: 32, 5: 24, 6: 32, 7: 32 };
+  for (const session of [1, 2, 3, 4, 5, 6, 7]) {
+    await test(`session ${session}'s demo renders its stage, which check passes, and a control changes it`, async () => {
+      const page = await open(browser, `${base}session${session}.html?live-size=${sizes[session]}`);
+      const first = await rendered(page);
+      assert(first.state === "done", `the demo says: ${first.status}`);
+      const file = save(first.png, `s${session}-${first.stage}.png`);
+      const checked = command("check", first.stage, file, "--quiet", "--cache", path.join(scratch, "cache"));
+      assert(checked.code === 0, `raycourse check ${first.stage}: exit ${checked.code}\n${checked.output}`);
+      const control = await moveControl(page);
+      const second = await rendered(page);
+      assert(second.state === "done", `after moving ${control}, the demo says: ${second.status}`);
+      assert(second.png !== first.png, `moving ${control} left the image as it was`);
+      assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
+      await page.close();
+    });
+  }
+}
+
+/** The check page with a file: its verdict and report. */
+async function checkPage(browser, base, stage, file) {
+  const page = await open(browser, `${base}check.html`);
+  await page.waitForSelector('.live-check[data-state="ready"]', { timeout: 60000 });
+  await page.select(".live-check select.live-stage", stage);
+  const input = await page.$('.live-check input[type="file"]');
+  await input.uploadFile(file);
+  await page.click(".live-check button");
+  await page.waitForSelector('.live-check[data-state="matches"], .live-check[data-state="differs"], .live-check[data-state="error"]', { timeout: 300000 });
+  const answer = await page.evaluate(() => {
+    const root = document.querySelector(".live-check");
+    return { state: root.dataset.state, report: root.querySelector(".live-report").textContent };
+  });
+  answer.errors = page.errors;
+  await page.close();
+  return answer;
+}
+
+async function checks(browser, base) {
+  const good = path.join(scratch, "shading.png");
+  execFileSync(raycourse, ["s1", "shading", "--width", "64", "--height", "48", "--out", good, "--quiet"]);
+  await test("the check page passes a correct image, as the command does", async () => {
+    const answer = await checkPage(browser, base, "shading", good);
+    assert(answer.state === "matches", `the page says: ${answer.report}`);
+    const said = command("check", "shading", good, "--quiet", "--cache", path.join(scratch, "cache")).output.trim();
+    assert(answer.report.trim() === said, `the page says\n${answer.report}\nthe command says\n${said}`);
+    assert(answer.errors.length === 0, `the page reported errors: ${answer.errors.join("; ")}`);
+  });
+  await test("the check page fails a gamma-less image with the gamma hint", async () => {
+    const scene = path.join(scratch, "no-gamma.toml");
+    fs.writeFileSync(scene, fs.readFileSync(path.join(root, "sessions/s2/gamma.toml"), "utf8").replace(/^gamma = 2\.2$/m, ""));
+    const linear = path.join(scratch, "no-gamma.png");
+    execFileSync(raycourse, ["render", scene, "--width", "64", "--height", "64", "--out", linear, "--quiet"]);
+    const answer = await checkPage(browser, base, "gamma", linear);
+    assert(answer.state === "differs", `the page says: ${answer.report}`);
+    assert(/hint \([^)]*gamma/.test(answer.report), `no gamma hint in: ${answer.report}`);
+  });
+  await test("the check page refuses a file that is not an image", async () => {
+    const text = path.join(scratch, "notes.png");
+    fs.writeFileSync(text, "not a picture");
+    const answer = await checkPage(browser, base, "shading", text);
+    assert(answer.state === "error", `the page says: ${answer.state}: ${answer.report}`);
+    assert(/not a PNG or JPEG/.test(answer.report), `the page says: ${answer.report}`);
+  });
+}
+
+/** The demos' times at 256 x 256: a control's change in sessions 1 and 2, the first
+ * pass and all samples elsewhere. Printed, not asserted: a timed test would fail on
+ * a busy machine. */
+async function speed(browser, base) {
+  console.log(`Chromium ${await browser.version()}, ${os.cpus()[0].model}, ${os.cpus().length} cores`);
+  console.log("session | stage | after a control's change: first pass | all samples");
+  for (const session of [1, 2, 3, 4, 5, 6, 7]) {
+    const page = await open(browser, `${base}session${session}.html`);
+    await rendered(page);
+    const times = [];
+    for (let i = 0; i < 5; i++) {
+      await moveControl(page);
+      times.push(await rendered(page));
+      if (session > 2) break;
+    }
+    const median = (key) => times.map((t) => t[key]).sort((a, b) => a - b)[Math.floor(times.length / 2)];
+    console.log(`${session} | ${times[0].stage} | ${median("firstMs")} ms | ${median("totalMs")} ms`);
+    await page.close();
+  }
+}
+
+const [server, base] = await serve();
+const browser = await puppeteer.launch({
+  executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
+  args: ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+    "--disable-component-update", "--disable-sync"],
+});
+try {
+  if (process.argv.includes("--speed")) {
+    await speed(browser, base);
+  } else {
+    await demos(browser, base);
+    await checks(browser, base);
+  }
+} finally {
+  await browser.close();
+  server.close();
+}
+const failed = results.filter(([, error]) => error).length;
+console.log(`${results.length - failed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);

@@ -1,0 +1,144 @@
+//! `cargo xtask book [--open]`: the live book. The crate compiled to WebAssembly
+//! (the `web` package), its JavaScript bindings made by wasm-bindgen into
+//! `book/src/live/pkg/`, then the book built by mdBook into `book/build/`; with
+//! `--open`, served on 127.0.0.1 and opened in a browser. What is missing is
+//! installed first, at the versions CI uses.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The WebAssembly target.
+const TARGET: &str = "wasm32-unknown-unknown";
+/// mdBook and its formula preprocessor, at the versions the book is built with.
+const MDBOOK: [(&str, &str); 2] = [("mdbook", "0.5.4"), ("mdbook-katex", "0.10.0")];
+
+/// Builds the live book; with `open`, serves it and opens it.
+pub fn build(root: &Path, open: bool) -> Result<(), String> {
+    let wasm = compile(root)?;
+    bindings(root, &wasm)?;
+    for (tool, version) in MDBOOK {
+        install_if_missing(tool, tool, version)?;
+    }
+    run(Command::new("mdbook").arg("build").arg(root.join("book")))?;
+    let html = root.join("book/build");
+    println!("the live book -> {}", html.display());
+    if open {
+        crate::serve::serve(&html)?;
+    }
+    Ok(())
+}
+
+/// Compiles the `web` package for the browser and returns the module's path. The
+/// standard route is rustup's target; where rustup cannot fetch it, Debian's
+/// `rustc-web` builds the standard library from source (`rust-web-src`) and links
+/// with `wasm-ld-19`.
+fn compile(root: &Path) -> Result<PathBuf, String> {
+    let target_dir = root.join("target/wasm");
+    let mut cargo = if rustup_has_target() {
+        Command::new("cargo")
+    } else {
+        println!(
+            "rustup has no {TARGET} target here: building with Debian's rustc-web, \
+             the standard library from source"
+        );
+        debian_cargo()?
+    };
+    cargo
+        .current_dir(root)
+        .args(["build", "--release", "--package", "raycourse-web", "--lib"])
+        .args(["--target", TARGET])
+        .env("CARGO_TARGET_DIR", &target_dir);
+    run(&mut cargo)?;
+    Ok(target_dir.join(TARGET).join("release/raycourse_web.wasm"))
+}
+
+/// Whether rustup has the WebAssembly target, adding it if it can.
+fn rustup_has_target() -> bool {
+    let installed =
+        |out: std::process::Output| String::from_utf8_lossy(&out.stdout).contains(TARGET);
+    let listed = Command::new("rustup")
+        .args(["target", "list", "--installed"])
+        .output();
+    if listed.is_ok_and(installed) {
+        return true;
+    }
+    println!("adding the {TARGET} target with rustup (a minute at most)");
+    let added = Command::new("timeout")
+        .args(["60", "rustup", "target", "add", TARGET])
+        .status();
+    added.is_ok_and(|s| s.success())
+}
+
+/// Debian's cargo and rustc-web, set to build the standard library for the target.
+fn debian_cargo() -> Result<Command, String> {
+    let needed = [
+        ("/usr/bin/rustc", "rustc-web"),
+        ("/usr/lib/rustlib/src/rust/library", "rust-web-src"),
+        ("/usr/bin/wasm-ld-19", "lld-19"),
+        ("/usr/bin/cargo", "cargo-web"),
+    ];
+    let missing: Vec<&str> = needed
+        .iter()
+        .filter(|(path, _)| !Path::new(path).exists())
+        .map(|(_, package)| *package)
+        .collect();
+    if !missing.is_empty() {
+        return Err(format!(
+            "neither rustup's {TARGET} target nor Debian's rustc-web is here: \
+             `rustup target add {TARGET}`, or `apt-get install {}`",
+            missing.join(" ")
+        ));
+    }
+    let mut cargo = Command::new("/usr/bin/cargo");
+    cargo
+        .arg("-Zbuild-std=std,panic_abort")
+        .env("RUSTC", "/usr/bin/rustc")
+        .env("RUSTC_BOOTSTRAP", "1")
+        .env("RUSTFLAGS", "-C linker=wasm-ld-19")
+        .env_remove("RUSTUP_TOOLCHAIN")
+        .env_remove("CARGO");
+    Ok(cargo)
+}
+
+/// The JavaScript bindings of `wasm`, with the module, in `book/src/live/pkg/`, by
+/// the wasm-bindgen that `web/Cargo.toml` pins.
+fn bindings(root: &Path, wasm: &Path) -> Result<(), String> {
+    let version = pinned_wasm_bindgen(root)?;
+    install_if_missing("wasm-bindgen", "wasm-bindgen-cli", &version)?;
+    run(Command::new("wasm-bindgen")
+        .args(["--target", "web", "--no-typescript", "--out-dir"])
+        .arg(root.join("book/src/live/pkg"))
+        .arg(wasm))
+}
+
+/// The version of wasm-bindgen in `web/Cargo.toml` (`wasm-bindgen = "=X.Y.Z"`).
+fn pinned_wasm_bindgen(root: &Path) -> Result<String, String> {
+    let manifest = std::fs::read_to_string(root.join("web/Cargo.toml"))
+        .map_err(|e| format!("web/Cargo.toml: {e}"))?;
+    manifest
+        .lines()
+        .find_map(|l| l.strip_prefix("wasm-bindgen = \"="))
+        .and_then(|rest| rest.strip_suffix('"'))
+        .map(str::to_owned)
+        .ok_or_else(|| "web/Cargo.toml: no `wasm-bindgen = \"=X.Y.Z\"` line".into())
+}
+
+/// Installs `package` at `version` with cargo unless `tool --version` names it.
+fn install_if_missing(tool: &str, package: &str, version: &str) -> Result<(), String> {
+    let found = Command::new(tool).arg("--version").output();
+    if found.is_ok_and(|out| String::from_utf8_lossy(&out.stdout).contains(version)) {
+        return Ok(());
+    }
+    println!("installing {package} {version} (once; a few minutes)");
+    run(Command::new("cargo").args(["install", package, "--version", version]))
+}
+
+/// Runs `command`, an error naming it if it fails.
+fn run(command: &mut Command) -> Result<(), String> {
+    let status = command.status().map_err(|e| format!("{command:?}: {e}"))?;
+    if status.success() {
+        Ok(())
+    } else {
+        Err(format!("{command:?} failed ({status})"))
+    }
+}
