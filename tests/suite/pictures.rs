@@ -95,6 +95,54 @@ fn shadows_darken_the_floor_below_the_sphere() {
     assert_eq!(brightened, 0, "a shadow ray never adds light");
 }
 
+/// The `shadows` stage at 128 x 128 with `shadow_offset = epsilon` in its file.
+#[cfg(feature = "s2")]
+fn shadows_offset_by(epsilon: &str) -> Film {
+    let stage = find_stage(2, "shadows").unwrap();
+    let text = stage.source.replace(
+        "shadows = true",
+        &format!("shadows = true\nshadow_offset = {epsilon}"),
+    );
+    let size = NonZeroU32::new(128);
+    let overrides = Overrides {
+        width: size,
+        height: size,
+        ..Overrides::default()
+    };
+    film(&raycourse::parse_scene(&text, &stage.file(), &overrides).unwrap())
+}
+
+#[cfg(feature = "s2")]
+#[test]
+fn a_zero_shadow_offset_shows_acne_and_a_small_one_does_not() {
+    // At epsilon = 0 a shadow ray starts on its own surface, which it meets again
+    // at t of about 0 for about half the points, by rounding: black speckles on
+    // lit surfaces. A small epsilon clears the rounding error: the same image as
+    // the crate's offset but on a few shadow-edge pixels.
+    let robust = film(&scene(2, "shadows", 128));
+    let lit = robust
+        .pixels
+        .iter()
+        .filter(|c| c.max_element() > 0.0)
+        .count();
+    let blackened = |film: &Film| {
+        let pairs = robust.pixels.iter().zip(&film.pixels);
+        pairs
+            .filter(|(a, b)| a.max_element() > 0.0 && b.max_element() == 0.0)
+            .count()
+    };
+    let acne = blackened(&shadows_offset_by("0"));
+    assert!(
+        acne * 5 > lit,
+        "{acne} of {lit} lit pixels turned black at epsilon 0"
+    );
+    let small = blackened(&shadows_offset_by("0.001"));
+    assert!(
+        small * 200 < lit,
+        "{small} of {lit} lit pixels turned black at epsilon 0.001"
+    );
+}
+
 #[cfg(feature = "s2")]
 #[test]
 fn mirror_centre_reflects_the_wall_behind_the_camera() {

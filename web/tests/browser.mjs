@@ -42,6 +42,11 @@ async function open(browser, url) {
   page.errors = [];
   page.on("pageerror", (error) => page.errors.push(error.message));
   page.on("console", (message) => message.type() === "error" && page.errors.push(message.text()));
+  const origin = new URL(url).origin;
+  page.on("request", (request) => {
+    const asked = request.url();
+    if (!asked.startsWith(origin) && !/^(data|blob):/.test(asked)) page.errors.push(`loaded from the network: ${asked}`);
+  });
   await page.goto(url);
   return page;
 }
@@ -117,6 +122,46 @@ async function demos(browser, base) {
       await page.close();
     });
   }
+}
+
+/** Sets the demo's control (or stage list, `stage`) `id` of `page` to `value`,
+ * and waits for the image. */
+async function setControl(page, id, value) {
+  await page.evaluate((id, value) => {
+    const input = id === "stage" ? document.querySelector(".live-demo select.live-stage")
+      : document.querySelector(`.live-demo [data-control="${id}"]`);
+    input.value = value;
+    input.dispatchEvent(new Event(input.type === "range" ? "input" : "change"));
+  }, id, value);
+  return rendered(page);
+}
+
+/** What the controls teach, seen through `check`: acne, and the orbit. */
+async function controls(browser, base) {
+  await test("session 2's shadow offset at 0 shows the acne that check names", async () => {
+    const page = await open(browser, `${base}session2.html?live-size=64`);
+    await rendered(page);
+    const clean = await setControl(page, "stage", "shadows");
+    const acne = await setControl(page, "offset", "0");
+    assert(acne.state === "done" && acne.png !== clean.png, `the offset changed nothing: ${acne.status}`);
+    const checked = command("check", "shadows", save(acne.png, "acne.png"), "--quiet", "--cache", path.join(scratch, "cache"));
+    assert(checked.code === 1 && /hint \(shadow acne\)/.test(checked.output), `check says:\n${checked.output}`);
+    assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
+    await page.close();
+  });
+  await test("session 7's image turns when dragged", async () => {
+    const page = await open(browser, `${base}session7.html?live-size=24`);
+    const before = await rendered(page);
+    const box = await (await page.$(".live-demo canvas.live-image")).boundingBox();
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width / 2 + 40, box.y + box.height / 2 + 10, { steps: 4 });
+    await page.mouse.up();
+    const after = await rendered(page);
+    assert(after.state === "done" && after.png !== before.png, `dragging changed nothing: ${after.status}`);
+    assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
+    await page.close();
+  });
 }
 
 /** The check page with a file: its verdict and report. */
@@ -197,6 +242,7 @@ try {
     await speed(browser, base);
   } else {
     await demos(browser, base);
+    await controls(browser, base);
     await checks(browser, base);
   }
 } finally {

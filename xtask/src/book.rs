@@ -62,10 +62,14 @@ fn rustup_has_target() -> bool {
     if listed.is_ok_and(installed) {
         return true;
     }
-    println!("adding the {TARGET} target with rustup (a minute at most)");
-    let added = Command::new("timeout")
-        .args(["60", "rustup", "target", "add", TARGET])
-        .status();
+    println!("adding the {TARGET} target with rustup (half a minute at most)");
+    let add = ["rustup", "target", "add", TARGET];
+    let added = match Command::new("timeout").arg("30").args(add).status() {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            Command::new(add[0]).args(&add[1..]).status()
+        }
+        other => other,
+    };
     added.is_ok_and(|s| s.success())
 }
 

@@ -33,6 +33,7 @@
     ["0.1", "ε = 0.1"],
     ["0.001", "ε = 0.001"],
     ["1e-9", "ε = 10⁻⁹"],
+    ["1e-14", "ε = 10⁻¹⁴"],
     ["0", "ε = 0: shadow acne"],
   ];
   const samples = range("samples", "samples per pixel", [1, 256, 1], (f) => f.render.samples || 1, () => ({}));
