@@ -1,27 +1,45 @@
-//! `cargo xtask book [--open]`: the live book. The crate compiled to WebAssembly
-//! (the `web` package), its JavaScript bindings made by wasm-bindgen into
-//! `book/src/live/pkg/`, then the book built by mdBook into `book/build/`; with
-//! `--open`, served on 127.0.0.1 and opened in a browser. What is missing is
-//! installed first, at the versions CI uses.
+//! `cargo xtask book [--open]`: the live book, in English and in French. The crate
+//! compiled to WebAssembly (the `web` package), its JavaScript bindings made by
+//! wasm-bindgen into `book/src/live/pkg/`, then the book built by mdBook into
+//! `book/build/`, and its French translation (`book/po/fr.po`) into
+//! `book/build/fr/`; with `--open`, served on 127.0.0.1 and opened in a browser.
+//! What is missing is installed first, at the versions CI uses.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The WebAssembly target.
 const TARGET: &str = "wasm32-unknown-unknown";
-/// mdBook and its formula preprocessor, at the versions the book is built with.
-const MDBOOK: [(&str, &str); 2] = [("mdbook", "0.5.4"), ("mdbook-katex", "0.10.0")];
+/// mdBook, its formula preprocessor and its translation tools (command, package,
+/// version), at the versions the book is built with.
+const MDBOOK: [(&str, &str, &str); 3] = [
+    ("mdbook", "mdbook", "0.5.4"),
+    ("mdbook-katex", "mdbook-katex", "0.10.0"),
+    ("mdbook-xgettext", "mdbook-i18n-helpers", "0.4.0"),
+];
+/// The book's translations, each with its title: `book/po/LANG.po`, built into
+/// `book/build/LANG/`.
+const LANGUAGES: [(&str, &str); 1] = [("fr", "raycourse : le lancer de rayons en sept séances")];
 
 /// Builds the live book; with `open`, serves it and opens it.
 pub fn build(root: &Path, open: bool) -> Result<(), String> {
     let wasm = compile(root)?;
     bindings(root, &wasm)?;
-    for (tool, version) in MDBOOK {
-        install_if_missing(tool, tool, version)?;
+    for (tool, package, version) in MDBOOK {
+        install_if_missing(tool, package, version)?;
     }
-    run(Command::new("mdbook").arg("build").arg(root.join("book")))?;
     let html = root.join("book/build");
-    println!("the live book -> {}", html.display());
+    run(Command::new("mdbook").arg("build").arg(root.join("book")))?;
+    for (language, title) in LANGUAGES {
+        run(Command::new("mdbook")
+            .arg("build")
+            .arg(root.join("book"))
+            .arg("--dest-dir")
+            .arg(html.join(language))
+            .env("MDBOOK_BOOK__LANGUAGE", language)
+            .env("MDBOOK_BOOK__TITLE", title))?;
+    }
+    println!("the live book -> {} (French: fr/)", html.display());
     if open {
         crate::serve::serve(&html)?;
     }
@@ -127,10 +145,16 @@ fn pinned_wasm_bindgen(root: &Path) -> Result<String, String> {
         .ok_or_else(|| "web/Cargo.toml: no `wasm-bindgen = \"=X.Y.Z\"` line".into())
 }
 
-/// Installs `package` at `version` with cargo unless `tool --version` names it.
+/// Installs `package` at `version` with cargo unless `tool --version` names it
+/// (or, for a tool without `--version`, cargo lists it as installed).
 fn install_if_missing(tool: &str, package: &str, version: &str) -> Result<(), String> {
     let found = Command::new(tool).arg("--version").output();
     if found.is_ok_and(|out| String::from_utf8_lossy(&out.stdout).contains(version)) {
+        return Ok(());
+    }
+    let listed = Command::new("cargo").args(["install", "--list"]).output();
+    let wanted = format!("{package} v{version}:");
+    if listed.is_ok_and(|out| String::from_utf8_lossy(&out.stdout).contains(&wanted)) {
         return Ok(());
     }
     println!("installing {package} {version} (once; a few minutes)");

@@ -5,7 +5,7 @@
 // the picture of the differences. The image never leaves the page.
 (function () {
   "use strict";
-  const { startWorkers, startEach, element } = window.raycourseLive;
+  const { startWorkers, startEach, element, say, french } = window.raycourseLive;
 
   class LiveCheck {
     constructor(root) {
@@ -14,7 +14,7 @@
       this.worker = startWorkers((message) => this.received(message), 1)[0];
       this.worker.postMessage({ kind: "stages" });
       root.dataset.state = "loading";
-      root.textContent = "loading the renderer…";
+      root.textContent = say("loading the renderer…");
     }
 
     received(message) {
@@ -22,7 +22,7 @@
       if (message.job !== this.job) return;
       if (message.kind === "progress") {
         this.progress.hidden = false;
-        this.status.textContent = `rendering the reference: ${message.rows} rows`;
+        this.status.textContent = `${say("rendering the reference")}${french ? " " : ""}: ${message.rows} ${say("rows")}`;
       }
       if (message.kind === "checked") this.show(message);
       if (message.kind === "error") this.fail(message.message);
@@ -30,35 +30,35 @@
 
     build(stages) {
       this.stage = element("select", { className: "live-stage" },
-        ...stages.map((s) => element("option", { value: s.name, textContent: `session ${s.session}: ${s.name}` })));
+        ...stages.map((s) => element("option", { value: s.name, textContent: `${say("session")} ${s.session}${french ? " " : ""}: ${s.name}` })));
       this.file = element("input", { type: "file", accept: "image/png,image/jpeg" });
-      this.button = element("button", { textContent: "check", onclick: () => this.check() });
+      this.button = element("button", { textContent: say("check"), onclick: () => this.check() });
       this.progress = element("progress", { hidden: true });
       this.status = element("p", { className: "live-status" });
       this.report = element("pre", { className: "live-report" });
-      this.difference = element("img", { className: "live-difference", alt: "the differences: differing pixels or blocks in red", hidden: true });
+      this.difference = element("img", { className: "live-difference", alt: say("the differences: differing pixels or blocks in red"), hidden: true });
       this.root.textContent = "";
       this.root.append(
-        element("p", {}, element("label", {}, "stage ", this.stage), " ", element("label", {}, "your image ", this.file), " ", this.button),
+        element("p", {}, element("label", {}, `${say("stage")} `, this.stage), " ", element("label", {}, `${say("your image")} `, this.file), " ", this.button),
         this.progress, this.status, this.report, this.difference);
       this.root.dataset.state = "ready";
     }
 
     async check() {
       const file = this.file.files[0];
-      if (!file) return this.fail("choose your image first (a PNG or JPEG file)");
+      if (!file) return this.fail(say("choose your image first (a PNG or JPEG file)"));
       this.job += 1;
       this.root.dataset.state = "checking";
       this.report.textContent = "";
       this.difference.hidden = true;
-      this.status.textContent = "rendering the reference…";
+      this.status.textContent = say("rendering the reference…");
       const bytes = await file.arrayBuffer();
       this.worker.postMessage({ kind: "check", job: this.job, stage: this.stage.value, file: bytes }, [bytes]);
     }
 
     show(message) {
       this.progress.hidden = true;
-      this.status.textContent = message.matches ? "matches" : "differs";
+      this.status.textContent = say(message.matches ? "matches" : "differs");
       this.report.textContent = message.text;
       this.report.className = `live-report ${message.matches ? "live-matches" : "live-differs"}`;
       if (this.difference.src) URL.revokeObjectURL(this.difference.src);

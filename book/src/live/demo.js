@@ -7,7 +7,7 @@
 // book's browser tests use it).
 (function () {
   "use strict";
-  const { startWorkers, startEach, element, duration } = window.raycourseLive;
+  const { startWorkers, startEach, element, duration, say, number, french } = window.raycourseLive;
 
   // A control: its id, its label, how it reads its starting value from a stage's
   // scene file (`undefined`: the stage has nothing it could change, and it is
@@ -103,7 +103,7 @@
       this.times = {};
       this.workers = startWorkers((message, worker) => this.received(message, worker));
       this.workers[0].postMessage({ kind: "stages" });
-      this.status("loading the renderer…");
+      this.status(say("loading the renderer…"));
     }
 
     status(text, state) {
@@ -117,7 +117,7 @@
       if (message.kind === "rows") this.paint(message);
       if (message.kind === "pass") this.passDone(message);
       if (message.kind === "cost") this.costDone(message);
-      if (message.kind === "error") this.status(`error: ${message.message}`, "error");
+      if (message.kind === "error") this.status(`${say("error")}: ${message.message}`, "error");
     }
 
     /** Builds the stage list, the canvases and the controls once the stages are known. */
@@ -125,12 +125,12 @@
       this.stages = stages.filter((s) => s.session === this.session);
       this.root.textContent = "";
       this.select = element("select", { className: "live-stage", onchange: () => this.pickStage() },
-        ...this.stages.map((s) => element("option", { value: s.name, textContent: `${s.name}: ${s.title}` })));
+        ...this.stages.map((s) => element("option", { value: s.name, textContent: french ? s.name : `${s.name}: ${s.title}` })));
       this.canvas = element("canvas", { className: "live-image", width: this.size, height: this.size });
       const images = element("div", { className: "live-images" }, this.canvas);
       if (this.setup.cost) {
         this.costCanvas = element("canvas", { className: "live-cost", width: this.size, height: this.size });
-        this.costCaption = element("figcaption", { textContent: "cost: tests per camera ray" });
+        this.costCaption = element("figcaption", { textContent: say("cost: tests per camera ray") });
         images.append(element("figure", {}, this.costCanvas, this.costCaption));
       }
       if (this.setup.orbit) this.orbit();
@@ -138,8 +138,8 @@
       this.statusLine = element("p", { className: "live-status" });
       this.timesTable = element("table", { className: "live-times" });
       this.functions = element("code", { className: "live-functions" });
-      const ran = element("details", {}, element("summary", { textContent: "the course functions this image ran" }), this.functions);
-      this.root.append(element("p", {}, "stage ", this.select), images, this.controls, this.statusLine, this.timesTable, ran);
+      const ran = element("details", {}, element("summary", { textContent: say("the course functions this image ran") }), this.functions);
+      this.root.append(element("p", {}, `${say("stage")} `, this.select), images, this.controls, this.statusLine, this.timesTable, ran);
       this.pickStage();
     }
 
@@ -166,7 +166,7 @@
       const shown = element("output", { textContent: String(value) });
       let input;
       if (control.kind === "select") {
-        input = element("select", {}, ...control.options.map(([v, label]) => element("option", { value: v, textContent: label })));
+        input = element("select", {}, ...control.options.map(([v, label]) => element("option", { value: v, textContent: say(label) })));
         input.value = value;
       } else {
         input = element("input", { type: control.kind, min: control.min, max: control.max, step: control.step });
@@ -181,7 +181,7 @@
         this.render();
       };
       input.addEventListener(control.kind === "range" ? "input" : "change", changed);
-      const label = element("label", { className: "live-control" }, `${control.label} `, input);
+      const label = element("label", { className: "live-control" }, `${say(control.label)} `, input);
       if (control.kind === "range") label.append(" ", shown);
       label.liveControl = control;
       this.inputs.push(label);
@@ -221,7 +221,7 @@
       const passes = samples > 1 ? [1, samples] : [1];
       this.pending = { passes, bands: Math.ceil(this.size / BAND), done: 0, rays: 0, started: performance.now() };
       this.edited = this.edits();
-      this.status(`rendering ${this.stage.name}…`);
+      this.status(`${say("rendering")} ${this.stage.name}…`);
       const count = this.workers.length;
       this.workers.forEach((worker, i) => {
         const bands = [];
@@ -249,8 +249,10 @@
       if (first) this.root.dataset.firstMs = Math.round(ms);
       this.functions.textContent = message.functions.join(", ");
       const last = message.pass === p.passes.length - 1;
-      const text = `${this.stage.name}, ${this.size} × ${this.size}: ${samples} sample${samples > 1 ? "s" : ""} per pixel in ${duration(ms)}`;
-      this.status(last ? `${text} (${this.workers.length} workers)` : `${text}; refining…`, last ? "done" : "working");
+      const per = say(samples > 1 ? "samples per pixel" : "sample per pixel");
+      const text = `${this.stage.name}, ${this.size} × ${this.size}${french ? " " : ""}: ${samples} ${per} ${say("in")} ${duration(ms)}`;
+      const workers = `${this.workers.length} ${say("workers")}`;
+      this.status(last ? `${text} (${workers})` : `${text}${french ? " " : ""}; ${say("refining…")}`, last ? "done" : "working");
       if (!last) return;
       this.root.dataset.totalMs = Math.round(ms);
       this.root.dataset.edits = JSON.stringify(this.edited);
@@ -269,18 +271,18 @@
       this.costCanvas.height = message.height;
       const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, message.height);
       this.costCanvas.getContext("2d").putImageData(pixels, 0, 0);
-      this.costCaption.textContent = `cost: ${message.mean.toFixed(1)} tests per camera ray on average`;
+      this.costCaption.textContent = `${say("cost")}${french ? " " : ""}: ${number(message.mean, 1)} ${say("tests per camera ray on average")}`;
       this.times[this.values.acceleration].cost = message.mean;
       this.showTimes();
     }
 
     showTimes() {
       const rows = Object.entries(this.times).map(([search, t]) => element("tr", {},
-        element("td", { textContent: meshes.find((m) => m[0] === search)[1] }),
-        element("td", { textContent: `${duration(t.ms)} (${t.samples} samples, ${t.size} × ${t.size})` }),
-        element("td", { textContent: t.cost === undefined ? "" : `${t.cost.toFixed(1)} tests per camera ray` })));
-      this.timesTable.replaceChildren(element("tr", {}, element("th", { textContent: "search" }),
-        element("th", { textContent: "time" }), element("th", { textContent: "cost" })), ...rows);
+        element("td", { textContent: say(meshes.find((m) => m[0] === search)[1]) }),
+        element("td", { textContent: `${duration(t.ms)} (${t.samples} ${say("samples")}, ${t.size} × ${t.size})` }),
+        element("td", { textContent: t.cost === undefined ? "" : `${number(t.cost, 1)} ${say("tests per camera ray")}` })));
+      this.timesTable.replaceChildren(element("tr", {}, element("th", { textContent: say("search") }),
+        element("th", { textContent: say("time") }), element("th", { textContent: say("cost") })), ...rows);
     }
 
     /** Session 7: dragging the image turns the camera around the cow and raises it. */

@@ -30,9 +30,71 @@
     return node;
   }
 
+  /** Whether the page is the French book's. */
+  const french = document.documentElement.lang.startsWith("fr");
+
+  // The demos' and the check page's words in French: the English text is the key.
+  const FRENCH = {
+    "field of view (degrees)": "champ de vision (degrés)",
+    "light x": "lumière x", "light y": "lumière y", "light z": "lumière z",
+    "albedo of the sphere": "albédo de la sphère",
+    "gamma correction (2.2)": "correction gamma (2,2)",
+    "shadow ray's offset": "décalage du rayon d'ombre",
+    "past the point's rounding error (the crate's)": "juste au-delà de l'erreur d'arrondi (celui de la crate)",
+    "ε = 0: shadow acne": "ε = 0 : acné d'ombre",
+    "the centre sphere": "la sphère centrale",
+    "diffuse": "diffuse", "mirror": "miroir", "glass": "verre",
+    "refractive index": "indice de réfraction",
+    "samples per pixel": "échantillons par pixel",
+    "sample per pixel": "échantillon par pixel",
+    "bounces": "rebonds",
+    "antialiasing": "anticrénelage",
+    "light radius": "rayon de la source",
+    "light sampling": "échantillonnage de la lumière",
+    "aperture": "ouverture",
+    "focus distance": "distance de mise au point",
+    "search of the mesh": "recherche dans le maillage",
+    "brute force": "force brute", "bounding box": "boîte englobante", "BVH": "BVH",
+    "smooth normals": "normales lissées",
+    "plunge (degrees); drag the image to orbit": "plongée (degrés) ; faites glisser l'image pour tourner",
+    "texture": "texture",
+    "loading the renderer…": "chargement du moteur de rendu…",
+    "stage": "étape",
+    "rendering": "calcul de",
+    "in": "en",
+    "refining…": "affinage…",
+    "workers": "threads",
+    "cost: tests per camera ray": "coût : tests par rayon primaire",
+    "tests per camera ray on average": "tests par rayon primaire en moyenne",
+    "tests per camera ray": "tests par rayon primaire",
+    "cost": "coût", "search": "recherche", "time": "temps", "samples": "échantillons",
+    "the course functions this image ran": "les fonctions du cours qui ont fait cette image",
+    "error": "erreur",
+    "your image": "votre image",
+    "check": "vérifier",
+    "session": "séance",
+    "rendering the reference…": "calcul de la référence…",
+    "rendering the reference": "calcul de la référence",
+    "rows": "lignes",
+    "matches": "correspond",
+    "differs": "diffère",
+    "choose your image first (a PNG or JPEG file)": "choisissez d'abord votre image (un fichier PNG ou JPEG)",
+    "the differences: differing pixels or blocks in red": "les différences : pixels ou blocs différents en rouge",
+    "the live demo": "la démo interactive",
+    "the check": "la vérification",
+    "This browser cannot run": "Ce navigateur ne peut pas exécuter",
+    "it needs WebAssembly and workers": "il faut WebAssembly et les workers",
+  };
+
+  /** `text` in the page's language. */
+  const say = (text) => (french && FRENCH[text]) || text;
+
+  /** A number with the page's decimal mark. */
+  const number = (x, digits) => (french ? x.toFixed(digits).replace(".", ",") : x.toFixed(digits));
+
   /** A duration in milliseconds as a reader reads it: "84 ms", "3.2 s". */
   function duration(ms) {
-    return ms < 1000 ? `${Math.round(ms)} ms` : `${(ms / 1000).toFixed(1)} s`;
+    return ms < 1000 ? `${Math.round(ms)} ms` : `${number(ms / 1000, 1)} s`;
   }
 
   /** Once the page is read, `make(root)` for each element that `selector` finds, or
@@ -41,12 +103,12 @@
     const start = () => {
       for (const root of document.querySelectorAll(selector)) {
         if (supported) make(root);
-        else root.textContent = `This browser cannot run ${what} (it needs WebAssembly and workers).`;
+        else root.textContent = `${say("This browser cannot run")} ${say(what)} (${say("it needs WebAssembly and workers")}).`;
       }
     };
     if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
     else start();
   }
 
-  window.raycourseLive = { startWorkers, startEach, element, duration };
+  window.raycourseLive = { startWorkers, startEach, element, duration, say, number, french };
 })();
