@@ -7,8 +7,10 @@
 // Each session chapter's demo renders its first stage at a small size; the pixels
 // read back from its canvas must pass `raycourse check` for that stage, and moving a
 // control must change them. The check page must pass a correct image, fail a
-// gamma-less one with the gamma hint, and refuse a file that is not an image. A page
-// that throws or logs an error fails its test.
+// gamma-less one with the gamma hint, and refuse a file that is not an image. The
+// French book's demo must speak French, and each page link to the other language's.
+// A page that throws, logs an error or loads anything from the network fails its
+// test.
 import { execFileSync, spawnSync } from "node:child_process";
 import fs from "node:fs";
 import http from "node:http";
@@ -166,6 +168,25 @@ async function controls(browser, base) {
   });
 }
 
+/** The French book: its demo speaks French, and every page links to the English. */
+async function french(browser, base) {
+  await test("the French book's demo runs in French, and its page links to the English one", async () => {
+    const page = await open(browser, `${base}fr/session1.html?live-size=32`);
+    const shown = await rendered(page);
+    assert(shown.state === "done", `the demo says: ${shown.status}`);
+    const words = await page.evaluate(() => [document.documentElement.lang,
+      document.querySelector(".live-controls").textContent, document.querySelector(".language-switch").href]);
+    assert(words[0] === "fr" && words[1].includes("champ de vision"), `the page says: ${words.join(" | ")}`);
+    assert(words[2] === `${base}session1.html`, `the switch leads to ${words[2]}`);
+    const english = await open(browser, words[2]);
+    const back = await english.evaluate(() => document.querySelector(".language-switch").href);
+    assert(back === `${base}fr/session1.html`, `the English page's switch leads to ${back}`);
+    assert(page.errors.length === 0 && english.errors.length === 0, `errors: ${[...page.errors, ...english.errors].join("; ")}`);
+    await english.close();
+    await page.close();
+  });
+}
+
 /** The check page with a file: its verdict and report. */
 async function checkPage(browser, base, stage, file) {
   const page = await open(browser, `${base}check.html`);
@@ -249,6 +270,7 @@ try {
   } else {
     await demos(browser, base);
     await controls(browser, base);
+    await french(browser, base);
     await checks(browser, base);
   }
 } finally {
