@@ -10,6 +10,7 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 use image::RgbImage;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::check::expected::Source;
+use raycourse::check::language::Language;
 use raycourse::check::report::{Report, Verdict, check};
 use raycourse::{Stage, stages};
 
@@ -51,6 +52,19 @@ struct CheckArgs {
     /// Hide the progress bar.
     #[arg(long, short)]
     quiet: bool,
+    /// The report's language, `en` or `fr` (default: the locale's, from `LC_ALL`,
+    /// `LC_MESSAGES` or `LANG`; English unless it is French).
+    #[arg(long, value_parser = ["en", "fr"])]
+    lang: Option<String>,
+}
+
+impl CheckArgs {
+    /// The language of the report: `--lang`, or the environment's.
+    fn language(&self) -> Language {
+        self.lang
+            .as_deref()
+            .map_or_else(Language::from_environment, Language::from_locale)
+    }
 }
 
 /// The `check` command (the whole course: session 7).
@@ -81,7 +95,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         .expect("clap requires an image without --all");
     let image = read_image(path)?;
     let report = check_one(&args, stage, &image, path)?;
-    for line in report.lines(stage) {
+    for line in report.lines(stage, args.language()) {
         println!("{line}");
     }
     if let Some(diff) = &args.diff {
@@ -225,7 +239,7 @@ fn grade_folder(args: &CheckArgs, dir: &Path) -> Result<Vec<(&'static Stage, Row
             None => Row::missing(),
             Some(path) => match read_image(&path) {
                 Err(failure) => Row::unreadable(failure),
-                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?),
+                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?, args.language()),
             },
         };
         rows.push((stage, row));
@@ -309,13 +323,15 @@ impl Row {
         }
     }
 
-    /// The row of a checked image.
-    fn of(report: &Report) -> Row {
+    /// The row of a checked image, its hint named in `language`.
+    fn of(report: &Report, language: Language) -> Row {
         let verdict = match report.verdict {
             Verdict::Matches => "matches",
             Verdict::Differs => "differs",
         };
-        let hint = report.hint.map_or(String::new(), |m| m.name.to_owned());
+        let hint = report
+            .hint
+            .map_or(String::new(), |m| m.words(language)[0].to_owned());
         let [r, g, b] = report.ratio;
         let noise = report
             .noise

@@ -6,7 +6,7 @@
 use std::num::NonZeroU32;
 use std::path::{Path, PathBuf};
 
-use crate::common::{run, text};
+use crate::common::{run, run_in_locale, text};
 use image::RgbImage;
 use raycourse::check::expected::Source;
 use raycourse::check::report::{Report, Verdict, check};
@@ -527,6 +527,34 @@ fn the_command_answers_with_its_exit_code_and_grades_a_folder() {
             .starts_with("stage,session,figure,verdict")
     );
     grades_a_class(&dir, &check);
+}
+
+/// `check` speaks French where the locale is French, and `--lang` overrides the
+/// locale; the verdict and the exit code are the same in both languages.
+#[test]
+fn the_report_follows_the_locale_or_lang() {
+    let dir = tempfile::tempdir().unwrap();
+    let cache = cache();
+    let dark = scene(stage("glass"), &|t| t.replace("gamma = 2.2\n", ""), 0, None);
+    picture(&dark).save(dir.path().join("dark.png")).unwrap();
+    let check = |locale: &str, more: &[&str]| {
+        let mut args = vec!["check", "-q", "--cache", cache.to_str().unwrap()];
+        args.extend(["glass", "dark.png"]);
+        args.extend(more);
+        let output = run_in_locale(&args, dir.path(), locale);
+        assert_eq!(output.status.code(), Some(1), "{}", text(&output.stdout));
+        text(&output.stdout)
+    };
+    let french = check("fr_FR.UTF-8", &[]);
+    assert!(french.starts_with("glass\u{a0}: diffère ("), "{french}");
+    assert!(french.contains("  où\u{a0}: "), "{french}");
+    let hint = "  indice (pas de gamma)\u{a0}: l'image semble affichée sans correction gamma";
+    assert!(french.contains(hint), "{french}");
+    let english = check("fr_FR.UTF-8", &["--lang", "en"]);
+    assert!(english.contains("  hint (no gamma): the image looks displayed"), "{english}");
+    let plain = check("C.UTF-8", &[]);
+    assert_eq!(plain, english, "English without a French locale");
+    assert_eq!(check("C.UTF-8", &["--lang", "fr"]), french);
 }
 
 /// A class: a folder of students' folders, graded into one sheet, a row per student.

@@ -3,6 +3,7 @@
 //! code as the command's. Nothing leaves the page.
 
 use raycourse::check::expected::Source;
+use raycourse::check::language::Language;
 use raycourse::check::report::{Verdict, check};
 use wasm_bindgen::prelude::*;
 
@@ -46,25 +47,35 @@ extern "C" {
 }
 
 /// Checks the image in `file` (a PNG or JPEG file's bytes) against the stage called
-/// `stage`, as `raycourse check STAGE IMAGE` does, telling the worker's
-/// `raycourseProgress` how many rows of the reference are rendered.
+/// `stage`, as `raycourse check STAGE IMAGE --lang LANGUAGE` does (`en` or `fr`),
+/// telling the worker's `raycourseProgress` how many rows of the reference are
+/// rendered.
 #[wasm_bindgen]
-pub fn check_image(stage: &str, file: &[u8]) -> Result<Checked, JsError> {
-    checked(stage, file, &|rows| report_progress(rows as f64)).map_err(|e| JsError::new(&e))
+pub fn check_image(stage: &str, file: &[u8], language: &str) -> Result<Checked, JsError> {
+    let language = Language::from_locale(language);
+    checked(stage, file, language, &|rows| report_progress(rows as f64))
+        .map_err(|e| JsError::new(&e))
 }
 
-/// The checker's answer on `file` for `stage`, or what is wrong with the input;
-/// `progress` is told the rows of the reference rendered so far.
+/// The checker's answer on `file` for `stage`, in `language`, or what is wrong with
+/// the input; `progress` is told the rows of the reference rendered so far.
 pub fn checked(
     stage: &str,
     file: &[u8],
+    language: Language,
     progress: &(dyn Fn(u64) + Sync),
 ) -> Result<Checked, String> {
     let stage = crate::find(stage)?;
     let format = image::guess_format(file).ok();
     let lossy = format == Some(image::ImageFormat::Jpeg);
     let image = image::load_from_memory(file)
-        .map_err(|e| format!("not a PNG or JPEG image that can be read: {e}"))?
+        .map_err(|e| {
+            let what = language.pick(
+                "not a PNG or JPEG image that can be read",
+                "ce n'est pas une image PNG ou JPEG lisible",
+            );
+            format!("{what}: {e}")
+        })?
         .to_rgb8();
     let rows = AtomicU64::new(0);
     let count = |_| progress(rows.fetch_add(1, Ordering::Relaxed) + 1);
@@ -80,7 +91,7 @@ pub fn checked(
     let picture = report.difference_image(&image);
     Ok(Checked {
         matches: report.verdict == Verdict::Matches,
-        lines: report.lines(stage),
+        lines: report.lines(stage, language),
         difference: raycourse::render::png::encode_rgb8(
             picture.as_raw(),
             picture.width(),

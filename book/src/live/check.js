@@ -53,7 +53,8 @@
       this.difference.hidden = true;
       this.status.textContent = say("rendering the reference…");
       const bytes = await file.arrayBuffer();
-      this.worker.postMessage({ kind: "check", job: this.job, stage: this.stage.value, file: bytes }, [bytes]);
+      const language = french ? "fr" : "en";
+      this.worker.postMessage({ kind: "check", job: this.job, stage: this.stage.value, file: bytes, language }, [bytes]);
     }
 
     show(message) {

@@ -67,7 +67,7 @@ function cost(job) {
 /** `raycourse check` on the image file's bytes, telling the rows of the reference. */
 function check(job) {
   self.raycourseProgress = (rows) => self.postMessage({ kind: "progress", job: job.job, rows });
-  const checked = check_image(job.stage, new Uint8Array(job.file));
+  const checked = check_image(job.stage, new Uint8Array(job.file), job.language);
   const png = checked.difference_png();
   self.postMessage({ kind: "checked", job: job.job, matches: checked.matches(), text: checked.text(), png }, [png.buffer]);
   checked.free();
