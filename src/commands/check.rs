@@ -166,7 +166,14 @@ fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
         return Err(Failure::Input(format!("{}: not a folder", dir.display())));
     }
     let students = students(dir)?;
-    if !students.is_empty() && image_of_any_stage(dir).is_none() {
+    if image_of_any_stage(dir).is_none() {
+        if students.iter().all(|s| image_of_any_stage(s).is_none()) {
+            return Err(Failure::Input(format!(
+                "{}: no image of a stage here, nor in a student's folder: name each image after \
+                 its stage, such as glass.png (`raycourse list` gives the stages)",
+                dir.display()
+            )));
+        }
         return grade_class(args, dir, &students);
     }
     let rows = grade_folder(args, dir)?;
@@ -272,12 +279,21 @@ fn students(dir: &Path) -> Result<Vec<PathBuf>, Failure> {
     Ok(folders)
 }
 
-/// A CSV field in quotes when it holds a comma or a quote.
+/// A CSV field: in quotes when it holds a comma, a quote or a line break; and, when
+/// it begins as a spreadsheet formula does (`=`, `+`, `-`, `@`, a tab or a carriage
+/// return), after a `'`, so that a spreadsheet shows it as text rather than run it
+/// (OWASP's advice against CSV injection): a student's folder may be named
+/// `=HYPERLINK(...)`.
 fn quoted(text: &str) -> String {
-    if text.contains([',', '"']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
+    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        format!("'{text}")
     } else {
         text.to_owned()
+    };
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text
     }
 }
 
@@ -318,7 +334,7 @@ impl Row {
         let hint = failure.to_string();
         Row {
             verdict: "unreadable",
-            figures: format!(",,,,,\"{}\"", hint.replace('"', "'")),
+            figures: format!(",,,,,{}", quoted(&hint)),
             hint,
         }
     }

@@ -98,9 +98,19 @@ impl RenderArgs {
     }
 }
 
-/// A thread pool of `threads` workers, one per core if `None`.
+/// The most worker threads a command starts: far more than any machine's cores,
+/// far fewer than would exhaust its memory with their stacks.
+pub const MOST_THREADS: usize = 1024;
+
+/// A thread pool of `threads` workers, one per core if `None`; more than
+/// [`MOST_THREADS`] are refused as a bad input.
 pub fn thread_pool(threads: Option<NonZeroUsize>) -> Result<rayon::ThreadPool, Failure> {
     let threads = threads.map_or(0, NonZeroUsize::get);
+    if threads > MOST_THREADS {
+        return Err(Failure::Input(format!(
+            "--threads {threads}: at most {MOST_THREADS} (one per core is the fastest)"
+        )));
+    }
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()

@@ -57,9 +57,40 @@ pub fn timed_render(label: &str, scene: &Scene, options: &RenderArgs) -> Result<
     })
 }
 
-/// Writes `bytes` to `path` without leaving half a file.
+/// Writes `bytes` to `path` without leaving half a file. A symbolic link is written
+/// through (the file it leads to is replaced, the link kept); a path that names
+/// something other than a regular file (a folder, a device, a pipe) is refused as a
+/// bad input, since replacing it by a file would lose what it is.
 pub fn write(path: &Path, bytes: &[u8]) -> Result<(), Failure> {
-    raycourse::render::write_atomically(path, bytes).map_err(|e| Failure::write(path, e))
+    let target = through_links(path)?;
+    raycourse::render::write_atomically(&target, bytes).map_err(|e| Failure::write(path, e))
+}
+
+/// Where writing `path` lands: the end of its chain of symbolic links, or `path`
+/// itself; refused when that exists and is not a regular file.
+fn through_links(path: &Path) -> Result<PathBuf, Failure> {
+    let mut target = path.to_path_buf();
+    // As many links as Linux follows before it gives up (ELOOP).
+    for _ in 0..40 {
+        let Ok(metadata) = std::fs::symlink_metadata(&target) else {
+            return Ok(target);
+        };
+        if metadata.is_file() {
+            return Ok(target);
+        }
+        if !metadata.file_type().is_symlink() {
+            return Err(Failure::Input(format!(
+                "{}: not a regular file (a folder, a device or a pipe): give the path of a file to write",
+                path.display()
+            )));
+        }
+        let link = std::fs::read_link(&target).map_err(|e| Failure::write(path, e))?;
+        target = target.parent().unwrap_or(Path::new("")).join(link);
+    }
+    Err(Failure::Input(format!(
+        "{}: a loop of symbolic links",
+        path.display()
+    )))
 }
 
 /// Renders `scene` into a PNG (`options.out`, or `default_out`) and prints the

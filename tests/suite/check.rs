@@ -551,10 +551,53 @@ fn the_report_follows_the_locale_or_lang() {
     let hint = "  indice (pas de gamma)\u{a0}: l'image semble affichée sans correction gamma";
     assert!(french.contains(hint), "{french}");
     let english = check("fr_FR.UTF-8", &["--lang", "en"]);
-    assert!(english.contains("  hint (no gamma): the image looks displayed"), "{english}");
+    assert!(
+        english.contains("  hint (no gamma): the image looks displayed"),
+        "{english}"
+    );
     let plain = check("C.UTF-8", &[]);
     assert_eq!(plain, english, "English without a French locale");
     assert_eq!(check("C.UTF-8", &["--lang", "fr"]), french);
+}
+
+/// A teacher's sheet is safe to open: a cell that a spreadsheet would run as a
+/// formula (a student's folder named `=HYPERLINK(...)`) is written as text; and a
+/// folder without any stage's image is refused, with no sheet written.
+#[test]
+fn a_sheet_shows_formulas_as_text_and_an_empty_folder_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let cache = cache();
+    let student = dir.path().join("class").join("=HYPERLINK(\"x\")");
+    std::fs::create_dir_all(&student).unwrap();
+    picture(&scene(stage("shading"), &same, 0, None))
+        .save(student.join("shading.png"))
+        .unwrap();
+    let check = |args: &[&str]| {
+        let mut all = vec!["check", "-q", "--cache", cache.to_str().unwrap()];
+        all.extend(args);
+        run(&all, dir.path())
+    };
+    let graded = check(&["--all", "class"]);
+    assert_eq!(graded.status.code(), Some(0), "{}", text(&graded.stderr));
+    let sheet = std::fs::read_to_string(dir.path().join("class/grades.csv")).unwrap();
+    let row = sheet.lines().nth(1).unwrap();
+    assert!(row.starts_with("\"'=HYPERLINK(\"\"x\"\")\","), "{row}");
+    std::fs::create_dir(dir.path().join("empty")).unwrap();
+    std::fs::remove_file(dir.path().join("class/grades.csv")).unwrap();
+    std::fs::remove_file(student.join("shading.png")).unwrap();
+    for folder in ["empty", "class"] {
+        let refused = check(&["--all", folder]);
+        assert_eq!(
+            refused.status.code(),
+            Some(2),
+            "{folder}: {}",
+            text(&refused.stdout)
+        );
+        let said = text(&refused.stderr);
+        assert!(said.contains("no image of a stage here"), "{said}");
+        assert_eq!(said.lines().count(), 1, "one line: {said}");
+        assert!(!dir.path().join(folder).join("grades.csv").exists());
+    }
 }
 
 /// A class: a folder of students' folders, graded into one sheet, a row per student.

@@ -273,3 +273,65 @@ fn exact_images_have_no_plot() {
     assert!(text(&out.stderr).contains("nothing to plot"));
     assert!(!dir.path().join("plot.png").exists());
 }
+
+#[test]
+fn too_many_threads_are_refused_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(&["s1", "shading", "--threads", "100000", "-q"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        text(&out.stderr).trim(),
+        "error: --threads 100000: at most 1024 (one per core is the fastest)"
+    );
+    assert!(!dir.path().join("out").exists(), "nothing written");
+}
+
+/// `--out` writes through a symbolic link, and refuses what is not a regular file
+/// (a pipe, a device, a folder) rather than replace it.
+#[cfg(unix)]
+#[test]
+fn out_writes_through_a_link_and_refuses_what_is_not_a_file() {
+    use std::os::unix::fs::FileTypeExt;
+    let dir = tempfile::tempdir().unwrap();
+    let render = |out: &str| {
+        run(
+            &[
+                "s1", "shading", "--width", "8", "--height", "8", "--out", out, "-q",
+            ],
+            dir.path(),
+        )
+    };
+    std::fs::write(dir.path().join("real.png"), b"old").unwrap();
+    std::os::unix::fs::symlink("real.png", dir.path().join("link.png")).unwrap();
+    assert!(render("link.png").status.success());
+    let link = std::fs::symlink_metadata(dir.path().join("link.png")).unwrap();
+    assert!(link.file_type().is_symlink(), "the link is kept");
+    let image = image::open(dir.path().join("real.png")).unwrap();
+    assert_eq!((image.width(), image.height()), (8, 8));
+    let fifo = dir.path().join("pipe");
+    assert!(
+        std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap()
+            .success()
+    );
+    std::fs::create_dir(dir.path().join("folder.png")).unwrap();
+    for (out, kind) in [
+        ("pipe", "pipe"),
+        ("/dev/null", "device"),
+        ("folder.png", "folder"),
+    ] {
+        let refused = render(out);
+        assert_eq!(refused.status.code(), Some(2), "{kind}");
+        let said = text(&refused.stderr);
+        assert!(said.contains("not a regular file"), "{kind}: {said}");
+        assert_eq!(said.lines().count(), 1, "{kind}: {said}");
+    }
+    assert!(
+        std::fs::symlink_metadata(&fifo)
+            .unwrap()
+            .file_type()
+            .is_fifo()
+    );
+}
