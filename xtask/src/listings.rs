@@ -33,32 +33,81 @@ pub fn preprocess(root: &Path) -> Result<(), String> {
     std::io::stdin()
         .read_to_string(&mut input)
         .map_err(|e| e.to_string())?;
-    let [_, mut book]: [Value; 2] =
+    let [context, mut book]: [Value; 2] =
         serde_json::from_str(&input).map_err(|e| format!("mdBook's input: {e}"))?;
+    let language = context["config"]["book"]["language"].as_str();
+    let words = if language == Some("fr") {
+        &FRENCH
+    } else {
+        &ENGLISH
+    };
     let mut seen = HashSet::new();
-    walk(&mut book, &views, &mut seen)?;
+    walk(&mut book, &views, words, &mut seen)?;
     println!("{book}");
     Ok(())
 }
 
+/// The words the preprocessor writes around the code, in the book's language.
+struct Words {
+    /// A listing's session, before its number.
+    session: &'static str,
+    /// After a listing's session: the lines it gained are marked.
+    gained: &'static str,
+    /// After a listing's session: the code is the session before's.
+    unchanged: &'static str,
+    /// The exercises table's header.
+    header: &'static str,
+    /// Between two functions of one exercise.
+    and: &'static str,
+}
+
+const ENGLISH: Words = Words {
+    session: "session",
+    gained: ", lines marked `// +` new in this session",
+    unchanged: ", unchanged since the last session",
+    header: "| exercise | what you write | function | file | checklist line |",
+    and: " and ",
+};
+
+const FRENCH: Words = Words {
+    session: "séance",
+    gained: ", lignes marquées `// +` nouvelles dans cette séance",
+    unchanged: ", inchangé depuis la séance précédente",
+    header: "| exercice | ce que vous écrivez | fonction | fichier | ligne de la liste de contrôle |",
+    and: " et ",
+};
+
 /// Fills the listings of every chapter under `value`.
-fn walk(value: &mut Value, views: &Path, seen: &mut HashSet<String>) -> Result<(), String> {
+fn walk(
+    value: &mut Value,
+    views: &Path,
+    words: &Words,
+    seen: &mut HashSet<String>,
+) -> Result<(), String> {
     match value {
         Value::Object(map) => {
             if let Some(Value::Object(chapter)) = map.get_mut("Chapter")
                 && let Some(Value::String(content)) = chapter.get_mut("content")
             {
-                *content = fill(content, views, seen)?;
+                *content = fill(content, views, words, seen)?;
             }
-            map.values_mut().try_for_each(|v| walk(v, views, seen))
+            map.values_mut()
+                .try_for_each(|v| walk(v, views, words, seen))
         }
-        Value::Array(items) => items.iter_mut().try_for_each(|v| walk(v, views, seen)),
+        Value::Array(items) => items
+            .iter_mut()
+            .try_for_each(|v| walk(v, views, words, seen)),
         _ => Ok(()),
     }
 }
 
 /// `content` with each `{{#listing ...}}` replaced by its listing.
-fn fill(content: &str, views: &Path, seen: &mut HashSet<String>) -> Result<String, String> {
+fn fill(
+    content: &str,
+    views: &Path,
+    words: &Words,
+    seen: &mut HashSet<String>,
+) -> Result<String, String> {
     let mut out = String::new();
     let mut rest = content;
     while let Some(start) = rest.find("{{#listing ") {
@@ -70,10 +119,10 @@ fn fill(content: &str, views: &Path, seen: &mut HashSet<String>) -> Result<Strin
         if !seen.insert(directive.trim().to_owned()) {
             return Err(format!("listing `{directive}` is shown twice in the book"));
         }
-        out += &listing(directive, views)?;
+        out += &listing(directive, views, words)?;
         rest = &rest[start + end + 2..];
     }
-    Ok(captioned(&exercise_tables(&(out + rest), views)?))
+    Ok(captioned(&exercise_tables(&(out + rest), views, words)?))
 }
 
 /// `content` with each image alone on its line made a `<figure>` with a visible
@@ -114,7 +163,7 @@ fn escape(text: &str) -> String {
 }
 
 /// `content` with each `{{#exercises sN}}` replaced by session N's table.
-fn exercise_tables(content: &str, views: &Path) -> Result<String, String> {
+fn exercise_tables(content: &str, views: &Path, words: &Words) -> Result<String, String> {
     let mut out = String::new();
     let mut rest = content;
     while let Some(start) = rest.find("{{#exercises ") {
@@ -123,7 +172,7 @@ fn exercise_tables(content: &str, views: &Path) -> Result<String, String> {
             .ok_or("an {{#exercises ...}} is not closed")?;
         out += &rest[..start];
         let session = rest[start + "{{#exercises ".len()..start + end].trim();
-        out += &exercise_table(crate::session(session)?, views)?;
+        out += &exercise_table(crate::session(session)?, views, words)?;
         rest = &rest[start + end + 2..];
     }
     Ok(out + rest)
@@ -131,7 +180,7 @@ fn exercise_tables(content: &str, views: &Path) -> Result<String, String> {
 
 /// The table of session `n`'s exercises: number, what it computes, the function
 /// and its file, the checklist's line.
-fn exercise_table(n: u32, views: &Path) -> Result<String, String> {
+fn exercise_table(n: u32, views: &Path, words: &Words) -> Result<String, String> {
     let view = views.join(format!("s{n}"));
     let checks = std::fs::read_to_string(view.join(format!("tests/exercises/s{n}.rs")))
         .map_err(|e| format!("the checklist of session {n}: {e}"))?;
@@ -150,9 +199,7 @@ fn exercise_table(n: u32, views: &Path) -> Result<String, String> {
         }
     }
     rows.sort_by_key(|(m, _)| crate::exercise::order(&m.id));
-    let mut table =
-        "| exercise | what you write | function | file | checklist line |\n|---|---|---|---|---|\n"
-            .to_owned();
+    let mut table = format!("{}\n|---|---|---|---|---|\n", words.header);
     let mut i = 0;
     while i < rows.len() {
         let id = rows[i].0.id.clone();
@@ -175,7 +222,7 @@ fn exercise_table(n: u32, views: &Path) -> Result<String, String> {
         table += &format!(
             "| {id} | {} | {} | `{}` | `{line}` |\n",
             group[0].0.title,
-            functions.join(" and "),
+            functions.join(words.and),
             group[0].1
         );
         i += group.len();
@@ -184,9 +231,9 @@ fn exercise_table(n: u32, views: &Path) -> Result<String, String> {
 }
 
 /// The listing of `sN FILE ANCHOR`: caption, then the code.
-fn listing(directive: &str, views: &Path) -> Result<String, String> {
-    let words: Vec<&str> = directive.split_whitespace().collect();
-    let [session, file, anchor] = words[..] else {
+fn listing(directive: &str, views: &Path, words: &Words) -> Result<String, String> {
+    let parts: Vec<&str> = directive.split_whitespace().collect();
+    let [session, file, anchor] = parts[..] else {
         return Err(format!(
             "`{{{{#listing {directive}}}}}`: expected sN FILE ANCHOR"
         ));
@@ -204,15 +251,13 @@ fn listing(directive: &str, views: &Path) -> Result<String, String> {
         _ => anchored(&path(n - 1), anchor)?,
     };
     let (code, note) = match before {
-        Some(before) if before != code => (
-            mark_gained(&before, &code),
-            ", lines marked `// +` new in this session",
-        ),
-        Some(_) => (code, ", unchanged since the last session"),
+        Some(before) if before != code => (mark_gained(&before, &code), words.gained),
+        Some(_) => (code, words.unchanged),
         None => (code, ""),
     };
+    let session = words.session;
     Ok(format!(
-        "<p class=\"listing-caption\"><code>{file}</code> (session {n}{note})</p>\n\n```rust,ignore\n{code}```\n"
+        "<p class=\"listing-caption\"><code>{file}</code> ({session} {n}{note})</p>\n\n```rust,ignore\n{code}```\n"
     ))
 }
 
