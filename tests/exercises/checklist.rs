@@ -53,6 +53,15 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     quiet_panics();
     let markers = markers();
     let chosen = |name: &str| filters.is_empty() || filters.iter().any(|f| name.contains(f));
+    // Every exercise's known answers first: a later session's code renders the
+    // earlier sessions' stages too, so a stage's line must know whether an exercise
+    // further down fails before it blames those above it.
+    let all: HashMap<&str, Verdict> = sessions
+        .iter()
+        .flat_map(|exercises| exercises.iter())
+        .filter(|e| chosen(e.name))
+        .map(|e| (e.id, caught(e.check)))
+        .collect();
     let mut verdicts: HashMap<&str, Verdict> = HashMap::new();
     let (mut passed, mut failed) = (0, 0);
     let current = sessions.len() as u32;
@@ -62,7 +71,7 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     for (index, exercises) in sessions.iter().enumerate() {
         let session = index as u32 + 1;
         for exercise in exercises.iter().filter(|e| chosen(e.name)) {
-            let verdict = caught(exercise.check);
+            let verdict = all[exercise.id].clone();
             let ok = verdict == Verdict::Passed;
             report(exercise.name, &verdict, Some(exercise), &markers, &verdicts);
             if session == current {
@@ -79,8 +88,9 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
             }
             verdicts.insert(exercise.id, verdict);
         }
+        let below = failing_below(&all, &verdicts);
         let (stages_passed, stages_failed, differing) =
-            check_stages(session, exercises, &chosen, &markers, &verdicts);
+            check_stages(session, exercises, &chosen, &markers, (&verdicts, &below));
         (passed, failed) = (passed + stages_passed, failed + stages_failed);
         if session == current {
             stage_next = stage_next.or(differing);
@@ -105,16 +115,34 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     }
 }
 
+/// The exercises of `all` further down than those in `so_far` whose known answers
+/// fail (not those still `todo!()`, which a stage would have stopped at), in the
+/// course's order.
+fn failing_below<'a>(
+    all: &HashMap<&'a str, Verdict>,
+    so_far: &HashMap<&str, Verdict>,
+) -> Vec<&'a str> {
+    let mut below: Vec<&str> = all
+        .iter()
+        .filter(|(id, v)| !so_far.contains_key(*id) && matches!(v, Verdict::Failed(_)))
+        .map(|(id, _)| *id)
+        .collect();
+    below.sort_by_key(|id| order(id));
+    below
+}
+
 /// Renders each stage of `session` that `chosen` keeps and compares it with its
 /// reference, printing its line: how many passed and failed, and the first that
-/// differs although every exercise so far passes (what to do next), with the
-/// exercises of the session, `exercises`, that its image relies on.
+/// differs although every exercise passes (what to do next), with the exercises of
+/// the session, `exercises`, that its image relies on. `verdicts` holds those of
+/// the exercises so far, and `below` those further down that fail: a stage that
+/// differs names them rather than blame the exercises so far.
 fn check_stages(
     session: u32,
     exercises: &[Exercise],
     chosen: &dyn Fn(&str) -> bool,
     markers: &HashMap<String, Marker>,
-    verdicts: &HashMap<&str, Verdict>,
+    (verdicts, below): (&HashMap<&str, Verdict>, &[&str]),
 ) -> (u32, u32, Option<String>) {
     let (mut passed, mut failed, mut differing) = (0, 0, None);
     let mut shown: Vec<&str> = vec![];
@@ -131,6 +159,15 @@ fn check_stages(
             continue;
         }
         failed += 1;
+        if matches!(verdict, Verdict::Failed(_)) && !below.is_empty() {
+            for id in below {
+                println!(
+                    "    exercise {}, further down, fails its known answers: this image may need it right first",
+                    describe(id, markers)
+                );
+            }
+            continue;
+        }
         let used = used_by(exercises, &shown);
         if let Some(look) = look_again(&verdict, verdicts, &used, markers) {
             println!("    {look}");
