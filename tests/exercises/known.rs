@@ -65,6 +65,14 @@ pub fn maybe(t: Option<Real>) -> String {
     t.map_or("no hit".into(), |t| format!("t = {}", num(t)))
 }
 
+/// A nearest hit (its distance and object) as the book writes it: `sphere 1 at
+/// t = 4`, or `no hit`.
+pub fn nearest(hit: Option<(Real, usize)>) -> String {
+    hit.map_or("no hit".into(), |(t, i)| {
+        format!("sphere {i} at t = {}", num(t))
+    })
+}
+
 /// The means of `f(u1, u2)` over an `n` x `n` grid of cell centres of the unit
 /// square: the quadrature a sampler's averages are checked with, exact to about
 /// `1 / n^2` for smooth integrands and the same whatever random numbers the

@@ -11,7 +11,7 @@ use raycourse::scene::Scene;
 use raycourse::{Overrides, parse_scene};
 
 use crate::checklist::Exercise;
-use crate::known::{Outcome, close_vec, ensure, maybe, same_distance, vec};
+use crate::known::{Outcome, close_vec, ensure, maybe, nearest, same_distance, vec};
 
 /// Session 1's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -157,14 +157,18 @@ fn nearest_sphere() -> Outcome {
         gave.is_some_and(|(t, i)| i == 1 && (t - 4.0).abs() < 1e-4),
         || {
             format!(
-                "spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {gave:?}, expected sphere 1 at t = 4"
+                "spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {}, expected sphere 1 at t = 4",
+                nearest(gave)
             )
         },
     )?;
     let up = Ray::new(Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0));
     let gave = room.nearest_sphere(&up);
     ensure(gave.is_none(), || {
-        format!("the same spheres, the ray along +y: gave {gave:?}, expected no hit")
+        format!(
+            "the same spheres, the ray along +y: gave {}, expected no hit",
+            nearest(gave)
+        )
     })
 }
 

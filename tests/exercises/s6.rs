@@ -9,7 +9,7 @@ use raycourse::maths::{Mat3, Real, Vec3};
 use raycourse::meshes::{BruteForce, Mesh, ObjData, Placement, Search, read_obj};
 
 use crate::checklist::Exercise;
-use crate::known::{Outcome, close_vec, ensure, vec};
+use crate::known::{Outcome, close_vec, ensure, maybe, vec};
 
 /// Session 6's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -216,9 +216,11 @@ fn walk() -> Outcome {
         };
         ensure(right, || {
             format!(
-                "ray {k} at Spot, from {} along {}: the walk gave {gave:?}, testing every triangle {expected:?}",
+                "ray {k} at Spot, from {} along {}: the walk gave {}, testing every triangle {}",
                 vec(ray.origin),
-                vec(ray.direction)
+                vec(ray.direction),
+                maybe(gave),
+                maybe(expected)
             )
         })?;
     }

@@ -151,7 +151,11 @@ fn orientation() -> Outcome {
     let down = aim(Vec3::new(0.0, 10.0, 0.0), Vec3::ZERO, Vec3::Y, 0.0);
     ensure(down.is_none(), || {
         format!(
-            "the camera at (0, 10, 0) looking straight down along up: gave {down:?}, expected none (no right-hand direction)"
+            "the camera at (0, 10, 0) looking straight down along up: gave {}, expected none (no right-hand direction)",
+            down.map_or("none".into(), |(eye, _)| format!(
+                "a camera at {}",
+                vec(eye)
+            ))
         )
     })
 }
