@@ -30,7 +30,7 @@ pub struct Settings {
     pub shadows: bool,
     /// The course's fixed offset `epsilon`: a shadow ray starts at `P + epsilon N`
     /// (session 2). `None`: at the offset that follows the point's rounding error
-    /// ([`Hit::spawn`](crate::geometry::Hit::spawn)); `Some(0.0)` shows shadow acne.
+    /// (`Hit::spawn`, session 2); `Some(0.0)` shows shadow acne.
     pub shadow_offset: Option<Real>,
     /// Whether diffuse surfaces also reflect light arriving from other surfaces
     /// (session 3), or only the light source's.
