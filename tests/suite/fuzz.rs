@@ -3,7 +3,8 @@
 //! are random edits of valid files (deleted, repeated or replaced characters,
 //! numbers swapped for extreme ones), which reach far deeper into the parsers than
 //! random bytes do. `cargo test` tries a few thousand; `FUZZ_CASES=1000000 cargo test
-//! --release --test suite fuzz` runs a longer campaign.
+//! --test suite fuzz` runs a longer campaign (the test profile is optimised and keeps
+//! the overflow checks, which `--release` would turn off).
 
 use std::path::Path;
 
