@@ -15,7 +15,6 @@
 //! image's `alt` text).
 
 use std::collections::HashSet;
-use std::io::Read;
 use std::path::{Path, PathBuf};
 
 use serde_json::Value;
@@ -29,12 +28,7 @@ pub fn preprocess(root: &Path) -> Result<(), String> {
     for n in 1..=7 {
         write_view(root, n, &views.join(format!("s{n}")))?;
     }
-    let mut input = String::new();
-    std::io::stdin()
-        .read_to_string(&mut input)
-        .map_err(|e| e.to_string())?;
-    let [context, mut book]: [Value; 2] =
-        serde_json::from_str(&input).map_err(|e| format!("mdBook's input: {e}"))?;
+    let (context, mut book) = crate::preprocessor::read()?;
     let language = context["config"]["book"]["language"].as_str();
     let words = if language == Some("fr") {
         &FRENCH

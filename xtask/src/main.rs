@@ -8,14 +8,18 @@
 //! - `cargo xtask exercises`: every exercise, its function, file and test;
 //! - `cargo xtask mdbook-listings`: the book's preprocessor that takes each session
 //!   chapter's listings from that session's view (mdBook runs it);
+//! - `cargo xtask mdbook-formulas hide|show`: the book's preprocessors that keep its
+//!   formulas whole through the translation (mdBook runs them);
 //! - `cargo xtask book [--open]`: the live book, the crate compiled to WebAssembly
 //!   for its demos and check page, in `book/build/` (`--open`: served and opened).
 
 mod book;
 mod cfg;
 mod exercise;
+mod formulas;
 mod listings;
 mod manifest;
+mod preprocessor;
 mod prune;
 mod serve;
 mod source;
@@ -44,7 +48,8 @@ fn session(text: &str) -> Result<u32, String> {
 fn run(args: &[String]) -> Result<(), String> {
     let usage = "usage: cargo xtask view sN DIR | cargo xtask views DIR | \
                  cargo xtask exercise sN DIR [--only sN.K] [--switch] | cargo xtask exercises | \
-                 cargo xtask mdbook-listings | cargo xtask book [--open]";
+                 cargo xtask mdbook-listings | cargo xtask mdbook-formulas hide|show | \
+                 cargo xtask book [--open]";
     match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["view", n, dir] => {
             let n = session(n)?;
@@ -69,6 +74,8 @@ fn run(args: &[String]) -> Result<(), String> {
         }
         ["mdbook-listings", "supports", _] => Ok(()),
         ["mdbook-listings"] => listings::preprocess(&root()),
+        ["mdbook-formulas", _, "supports", _] => Ok(()),
+        ["mdbook-formulas", mode] => formulas::preprocess(mode),
         ["book"] => book::build(&root(), false),
         ["book", "--open"] => book::build(&root(), true),
         _ => Err(usage.into()),

@@ -31,12 +31,13 @@ fn open_browser(address: &str) {
     } else {
         "xdg-open"
     };
-    if std::process::Command::new(opener)
+    let opened = std::process::Command::new(opener)
         .arg(address)
-        .spawn()
-        .is_err()
-    {
-        println!("open {address} in a browser");
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .status();
+    if !opened.is_ok_and(|status| status.success()) {
+        println!("if no browser opened, open {address} in one");
     }
 }
 
