@@ -240,13 +240,14 @@ fn grade_class(args: &CheckArgs, dir: &Path, students: &[PathBuf]) -> Result<(),
 
 /// Each stage of the build with the row of its image in `dir`.
 fn grade_folder(args: &CheckArgs, dir: &Path) -> Result<Vec<(&'static Stage, Row)>, Failure> {
+    let language = args.language();
     let mut rows = vec![];
     for stage in stages() {
         let row = match image_of(dir, stage) {
             None => Row::missing(),
             Some(path) => match read_image(&path) {
                 Err(failure) => Row::unreadable(failure),
-                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?, args.language()),
+                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?, language),
             },
         };
         rows.push((stage, row));

@@ -40,12 +40,12 @@ pub fn read_obj(path: &Path) -> Result<ObjData, String> {
 }
 
 // ANCHOR: obj_read
-/// Reads the OBJ file at `path` from `files` with tobj: polygons are split into triangles and
-/// every corner gets one index for position, normal and texture coordinates. The
-/// models of the file are merged; normals or texture coordinates are kept only if
-/// every model has them. A missing or broken MTL file only loses the texture. The
-/// file is read once: its lines are checked ([`check_lines`]), then tobj parses
-/// the same text.
+/// Reads the OBJ file at `path` from `files` with tobj: polygons are split into
+/// triangles and every corner gets one index for position, normal and texture
+/// coordinates. The models of the file are merged; normals or texture coordinates are
+/// kept only if every model has them. A missing or broken MTL file only loses the
+/// texture. The file is read once: its lines are checked ([`check_lines`]), then tobj
+/// parses the same text.
 pub fn read_obj_from(path: &Path, files: &dyn Files) -> Result<ObjData, String> {
     let bytes = files.read(path).map_err(|e| e.to_string())?;
     let text = match std::str::from_utf8(&bytes) {

@@ -463,11 +463,7 @@ fn the_command_answers_with_its_exit_code_and_grades_a_folder() {
     let dark = scene(stage("glass"), &|t| t.replace("gamma = 2.2\n", ""), 0, None);
     picture(&dark).save(dir.path().join("dark.png")).unwrap();
     std::fs::write(dir.path().join("note.png"), b"not a picture").unwrap();
-    let check = |args: &[&str]| {
-        let mut all = vec!["check", "-q", "--cache", cache.to_str().unwrap()];
-        all.extend(args);
-        run(&all, dir.path())
-    };
+    let check = |args: &[&str]| check_in(dir.path(), &cache, args);
     let right = check(&["glass", "glass.png"]);
     assert_eq!(right.status.code(), Some(0), "{}", text(&right.stdout));
     assert!(text(&right.stdout).starts_with("glass: matches"));
@@ -572,11 +568,7 @@ fn a_sheet_shows_formulas_as_text_and_an_empty_folder_is_refused() {
     picture(&scene(stage("shading"), &same, 0, None))
         .save(student.join("shading.png"))
         .unwrap();
-    let check = |args: &[&str]| {
-        let mut all = vec!["check", "-q", "--cache", cache.to_str().unwrap()];
-        all.extend(args);
-        run(&all, dir.path())
-    };
+    let check = |args: &[&str]| check_in(dir.path(), &cache, args);
     let graded = check(&["--all", "class"]);
     assert_eq!(graded.status.code(), Some(0), "{}", text(&graded.stderr));
     let sheet = std::fs::read_to_string(dir.path().join("class/grades.csv")).unwrap();
@@ -598,6 +590,13 @@ fn a_sheet_shows_formulas_as_text_and_an_empty_folder_is_refused() {
         assert_eq!(said.lines().count(), 1, "one line: {said}");
         assert!(!dir.path().join(folder).join("grades.csv").exists());
     }
+}
+
+/// `raycourse check -q --cache CACHE ARGS...`, run in `dir`.
+fn check_in(dir: &Path, cache: &Path, args: &[&str]) -> std::process::Output {
+    let mut all = vec!["check", "-q", "--cache", cache.to_str().unwrap()];
+    all.extend(args);
+    run(&all, dir)
 }
 
 /// A class: a folder of students' folders, graded into one sheet, a row per student.

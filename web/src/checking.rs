@@ -79,12 +79,11 @@ pub fn checked(
         .to_rgb8();
     let rows = AtomicU64::new(0);
     let count = |_| progress(rows.fetch_add(1, Ordering::Relaxed) + 1);
-    let files = assets::stage_files();
     let source = Source {
         stage,
         size: image.dimensions(),
         cache: std::path::Path::new(""),
-        files: &files,
+        files: assets::stage_files(),
         progress: &count,
     };
     let report = check(&source, &image, lossy).map_err(|e| e.to_string())?;

@@ -147,7 +147,7 @@ pub fn scene(
         samples: NonZeroU32::new(samples),
         ..Overrides::default()
     };
-    raycourse::parse_scene_from(&text, &stage.file(), &overrides, &assets::stage_files())
+    raycourse::parse_scene_from(&text, &stage.file(), &overrides, assets::stage_files())
         .map_err(|e| e.to_string())
 }
 
@@ -163,9 +163,7 @@ mod tests {
             height: NonZeroU32::new(size),
             ..Overrides::default()
         };
-        let scene = stage
-            .scene_from(&overrides, &assets::stage_files())
-            .unwrap();
+        let scene = stage.scene_from(&overrides, assets::stage_files()).unwrap();
         raycourse::render(&scene).film.to_rgb8(scene.settings.gamma)
     }
 

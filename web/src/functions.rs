@@ -8,7 +8,7 @@ use raycourse::materials::Material;
 use raycourse::meshes::MeshAlbedo;
 
 /// The course functions that rendering `scene` runs, from the pixel loop to the
-/// light: each listed once, in the order a ray meets them.
+/// light: each listed once, in the order a ray first meets them.
 pub fn ran(scene: &Scene) -> Vec<&'static str> {
     let mut names = vec!["render_row", "pixel"];
     names.extend(camera(scene));
@@ -20,18 +20,22 @@ pub fn ran(scene: &Scene) -> Vec<&'static str> {
     ]);
     names.extend(meshes(scene));
     names.extend(materials(scene));
+    let mut seen = std::collections::HashSet::new();
+    names.retain(|name| seen.insert(*name));
     names
 }
 
-/// The camera's functions: the pinhole, its jitter, its lens, its aim.
+/// The camera's functions: each sample's ray (`sample_ray`, the course's pixel loop
+/// from session 3 on), its jitter, its lens, its aim.
 fn camera(scene: &Scene) -> Vec<&'static str> {
     let camera = &scene.camera;
-    let mut names = vec!["Camera::ray", "Camera::pixel_direction"];
+    let mut names = vec!["Camera::sample_ray", "Camera::pixel_direction"];
+    names.extend(["PixelFilter::offset", "Lens::refocus", "Camera::place"]);
     if camera.filter != PixelFilter::Centre {
-        names.push("Camera::sample_ray");
+        names.push("sample_gaussian");
     }
     if matches!(camera.lens, Lens::Thin(_)) {
-        names.extend(["sample_disk", "ThinLens::refocus"]);
+        names.extend(["ThinLens::refocus", "sample_disk"]);
     }
     if camera.orientation != Default::default() {
         names.push("Orientation::to_world");
@@ -92,7 +96,6 @@ fn materials(scene: &Scene) -> Vec<&'static str> {
             names.extend(["Tracer::bounce", "Tracer::next_bounce"]);
         }
     }
-    names.dedup();
     names
 }
 
@@ -118,4 +121,42 @@ fn lights(scene: &Scene) -> Vec<&'static str> {
         names.push("Russian roulette");
     }
     names
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raycourse::Overrides;
+
+    fn listed(name: &str) -> Vec<&'static str> {
+        let stage = raycourse::stages().find(|s| s.name == name).unwrap();
+        let files = crate::assets::stage_files();
+        ran(&stage.scene_from(&Overrides::default(), files).unwrap())
+    }
+
+    #[test]
+    fn the_list_follows_the_scene_and_names_each_function_once() {
+        let camera = listed("camera");
+        for name in [
+            "Camera::sample_ray",
+            "sample_gaussian",
+            "Orientation::to_world",
+        ] {
+            assert!(camera.contains(&name), "{name} in {camera:?}");
+        }
+        assert!(camera.contains(&"Texture::colour") && camera.contains(&"Bvh::nearest"));
+        assert!(
+            !camera.contains(&"Camera::ray"),
+            "from session 3, rays are sample_ray's"
+        );
+        let glass = listed("glass");
+        assert!(glass.contains(&"refract") && !glass.contains(&"Tracer::mirror"));
+        assert!(!glass.contains(&"ThinLens::refocus") && !glass.contains(&"Mesh::intersect"));
+        for list in [camera, glass, listed("depth-of-field")] {
+            let mut unique = list.clone();
+            unique.sort();
+            unique.dedup();
+            assert_eq!(unique.len(), list.len(), "{list:?}");
+        }
+    }
 }

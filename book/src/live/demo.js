@@ -173,6 +173,7 @@
         if (control.kind === "checkbox") input.checked = value; else input.value = value;
       }
       input.dataset.control = control.id;
+      input.shown = shown;
       const changed = () => {
         const v = control.kind === "checkbox" ? input.checked : control.kind === "range" ? Number(input.value) : input.value;
         this.values[control.id] = v;
@@ -298,7 +299,7 @@
         from = [e.clientX, e.clientY];
         this.values.plunge = Math.round(plunge);
         const input = this.controls.querySelector('[data-control="plunge"]');
-        if (input) { input.value = this.values.plunge; input.nextSibling.nextSibling.textContent = String(this.values.plunge); }
+        if (input) { input.value = this.values.plunge; input.shown.textContent = String(this.values.plunge); }
         this.render();
       });
     }
