@@ -11,6 +11,8 @@ use raycourse::stages;
 
 use crate::images;
 use crate::known::Outcome;
+use crate::say;
+use crate::words::french;
 
 /// One exercise, as the checklist runs it.
 pub struct Exercise {
@@ -27,6 +29,9 @@ pub struct Exercise {
     pub needs: &'static [&'static str],
     /// The check: known answers.
     pub check: fn() -> Outcome,
+    /// What it computes and the French book's section, for the checklist in French:
+    /// `["la distance rayon-sphère", "séance 1, « Un disque blanc »"]`.
+    pub french: [&'static str; 2],
 }
 
 /// An exercise's marker, read from the source: `/// Exercise s1.2, what: book ...`.
@@ -52,6 +57,8 @@ enum Verdict {
 pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     quiet_panics();
     let markers = markers();
+    let unmarked = unmarked(sessions, &markers);
+    let markers = in_language(markers, sessions);
     let chosen = |name: &str| filters.is_empty() || filters.iter().any(|f| name.contains(f));
     // Every exercise's known answers first: a later session's code renders the
     // earlier sessions' stages too, so a stage's line must know whether an exercise
@@ -96,12 +103,17 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
             stage_next = stage_next.or(differing);
         }
     }
-    let unmarked = unmarked(sessions, &markers);
     if !unmarked.is_empty() {
         println!("markers ... FAILED\n    {unmarked}");
         failed += 1;
     }
-    println!("\nchecklist: {passed} passed; {failed} failed");
+    println!(
+        "\n{}",
+        say!(
+            "checklist: {passed} passed; {failed} failed",
+            "liste de contrôle\u{a0}: {passed} réussis\u{a0}; {failed} en échec"
+        )
+    );
     progress(
         current,
         sessions.last().map_or(0, |e| e.len()),
@@ -161,9 +173,13 @@ fn check_stages(
         failed += 1;
         if matches!(verdict, Verdict::Failed(_)) && !below.is_empty() {
             for id in below {
+                let exercise = describe(id, markers);
                 println!(
-                    "    exercise {}, further down, fails its known answers: this image may need it right first",
-                    describe(id, markers)
+                    "    {}",
+                    say!(
+                        "exercise {exercise}, further down, fails its known answers: this image may need it right first",
+                        "l'exercice {exercise}, plus bas, échoue sur ses réponses connues\u{a0}: cette image en a peut-être besoin d'abord"
+                    )
                 );
             }
             continue;
@@ -171,7 +187,11 @@ fn check_stages(
         let used = used_by(exercises, &shown);
         if let Some(look) = look_again(&verdict, verdicts, &used, markers) {
             println!("    {look}");
-            differing = differing.or(Some(format!("the stage `{}`: {look}", stage.name)));
+            let name = stage.name;
+            differing = differing.or(Some(say!(
+                "the stage `{name}`: {look}",
+                "l'étape `{name}`\u{a0}: {look}"
+            )));
         }
     }
     (passed, failed, differing)
@@ -202,21 +222,33 @@ fn look_again(
         return None;
     }
     let names: Vec<String> = used.iter().map(|id| describe(id, markers)).collect();
-    Some(format!(
-        "every exercise passes its known answers, so look again at how the image uses exercise {}",
-        names.join("; exercise ")
-    ))
+    Some(if french() {
+        format!(
+            "chaque exercice réussit ses réponses connues\u{a0}: revoyez donc comment l'image se sert de l'exercice {}",
+            names.join("\u{a0}; de l'exercice ")
+        )
+    } else {
+        format!(
+            "every exercise passes its known answers, so look again at how the image uses exercise {}",
+            names.join("; exercise ")
+        )
+    })
 }
 
 /// The closing line: how many of the last session's exercises pass, and which is next
 /// (an exercise, or a stage that differs although its exercises pass).
 fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
-    match next {
-        Some(next) => {
-            println!("progress: session {session}: {done} of {total} exercises done; next: {next}")
-        }
-        None => println!("progress: session {session}: all {total} exercises done"),
-    }
+    let line = match next {
+        Some(next) => say!(
+            "progress: session {session}: {done} of {total} exercises done; next: {next}",
+            "progression\u{a0}: séance {session}\u{a0}: {done} exercices faits sur {total}\u{a0}; ensuite\u{a0}: {next}"
+        ),
+        None => say!(
+            "progress: session {session}: all {total} exercises done",
+            "progression\u{a0}: séance {session}\u{a0}: les {total} exercices sont faits"
+        ),
+    };
+    println!("{line}");
 }
 
 /// The verdict of `run`: a panic with a stub's message names the stub's exercise.
@@ -233,7 +265,10 @@ fn caught(run: impl FnOnce() -> Outcome) -> Verdict {
             let place = PANIC_PLACE.lock().map(|p| p.clone()).unwrap_or_default();
             match stub_of(&message) {
                 Some(stub) => Verdict::Stub(stub.to_owned()),
-                None => Verdict::Failed(format!("panicked: {message} ({place})")),
+                None => Verdict::Failed(say!(
+                    "panicked: {message} ({place})",
+                    "panique\u{a0}: {message} ({place})"
+                )),
             }
         }
     }
@@ -259,6 +294,7 @@ fn report(
     markers: &HashMap<String, Marker>,
     earlier: &HashMap<&str, Verdict>,
 ) {
+    let failed_line = || println!("{name} ... {}", say!("FAILED", "ÉCHEC"));
     let why = match verdict {
         Verdict::Passed => {
             println!("{name} ... ok");
@@ -266,24 +302,41 @@ fn report(
         }
         Verdict::Failed(why) => why,
         Verdict::Stub(stub) => {
-            println!("{name} ... FAILED");
-            if exercise.is_some_and(|e| e.id == stub) {
+            failed_line();
+            let own = exercise.is_some_and(|e| e.id == stub);
+            let stub = describe(stub, markers);
+            if own {
                 println!(
-                    "    exercise {}: still todo!(); write it",
-                    describe(stub, markers)
+                    "    {}",
+                    say!(
+                        "exercise {stub}: still todo!(); write it",
+                        "exercice {stub}\u{a0}: encore todo!()\u{a0}; à écrire"
+                    )
                 );
             } else {
                 println!(
-                    "    needs exercise {} first: it is still todo!()",
-                    describe(stub, markers)
+                    "    {}",
+                    say!(
+                        "needs exercise {stub} first: it is still todo!()",
+                        "il faut d'abord l'exercice {stub}\u{a0}: il est encore todo!()"
+                    )
                 );
             }
             return;
         }
     };
-    println!("{name} ... FAILED");
+    failed_line();
     match exercise {
-        Some(e) => println!("    exercise {}: {why}", describe(e.id, markers)),
+        Some(e) => {
+            let exercise = describe(e.id, markers);
+            println!(
+                "    {}",
+                say!(
+                    "exercise {exercise}: {why}",
+                    "exercice {exercise}\u{a0}: {why}"
+                )
+            )
+        }
         None => println!("    {why}"),
     }
     if exercise.is_none() {
@@ -294,17 +347,25 @@ fn report(
             .collect();
         failing.sort_by_key(|id| order(id));
         for id in failing {
+            let exercise = describe(id, markers);
             println!(
-                "    exercise {} fails: the image needs it right first",
-                describe(id, markers)
+                "    {}",
+                say!(
+                    "exercise {exercise} fails: the image needs it right first",
+                    "l'exercice {exercise} échoue\u{a0}: l'image en a besoin d'abord"
+                )
             );
         }
     }
     for need in exercise.map_or(&[][..], |e| e.needs) {
         if earlier.get(need).is_some_and(|v| *v != Verdict::Passed) {
+            let need = describe(need, markers);
             println!(
-                "    it calls exercise {}, which fails too: fix that one first",
-                describe(need, markers)
+                "    {}",
+                say!(
+                    "it calls exercise {need}, which fails too: fix that one first",
+                    "il appelle l'exercice {need}, qui échoue aussi\u{a0}: corrigez d'abord celui-là"
+                )
             );
         }
     }
@@ -317,6 +378,25 @@ fn describe(id: &str, markers: &HashMap<String, Marker>) -> String {
         Some(m) => format!("{id}, {} ({})", m.title, m.book),
         None => id.to_owned(),
     }
+}
+
+/// The markers in the checklist's language: in French, each exercise's title and
+/// section as its `french` field gives them.
+fn in_language(
+    mut markers: HashMap<String, Marker>,
+    sessions: &[&[Exercise]],
+) -> HashMap<String, Marker> {
+    if french() {
+        for e in sessions.iter().flat_map(|s| s.iter()) {
+            let [title, section] = e.french;
+            let marker = Marker {
+                title: title.to_owned(),
+                book: format!("livre, {section}"),
+            };
+            markers.insert(e.id.to_owned(), marker);
+        }
+    }
+    markers
 }
 
 /// Where the last panic happened: the checklist prints it beside the message.

@@ -5,6 +5,9 @@
 
 use raycourse::maths::{Real, Vec3};
 
+use crate::say;
+use crate::words::{decimal, separator};
+
 /// A check's result: `Err` says what went wrong, in the book's notation.
 pub type Outcome = Result<(), String>;
 
@@ -16,39 +19,42 @@ pub fn ensure(holds: bool, why: impl FnOnce() -> String) -> Outcome {
 /// `gave` within `tolerance` of `expected`.
 pub fn close(what: &str, gave: Real, expected: Real, tolerance: Real) -> Outcome {
     ensure((gave - expected).abs() <= tolerance, || {
-        format!(
-            "{what}: gave {}, expected {} (within {tolerance})",
-            num(gave),
-            num(expected)
-        )
+        gave_expected(what, &num(gave), &num(expected), tolerance)
     })
 }
 
 /// `gave` within `tolerance` of `expected`, component by component.
 pub fn close_vec(what: &str, gave: Vec3, expected: Vec3, tolerance: Real) -> Outcome {
     ensure((gave - expected).abs().max_element() <= tolerance, || {
-        format!(
-            "{what}: gave {}, expected {} (within {tolerance})",
-            vec(gave),
-            vec(expected)
-        )
+        gave_expected(what, &vec(gave), &vec(expected), tolerance)
     })
 }
 
-/// A number as the book writes it: a few significant digits.
+/// `what: gave G, expected E (within T)`, in the checklist's language.
+fn gave_expected(what: &str, gave: &str, expected: &str, tolerance: Real) -> String {
+    let tolerance = decimal(tolerance.to_string());
+    say!(
+        "{what}: gave {gave}, expected {expected} (within {tolerance})",
+        "{what}\u{a0}: donne {gave}, attendu {expected} (à {tolerance} près)"
+    )
+}
+
+/// A number as the book writes it: a few significant digits, with the language's
+/// decimal mark.
 pub fn num(x: Real) -> String {
     let text = format!("{x:.4}");
     let text = text.trim_end_matches('0').trim_end_matches('.');
-    if text == "-0" {
+    decimal(if text == "-0" {
         "0".into()
     } else {
         text.into()
-    }
+    })
 }
 
-/// A vector as the book writes it: `(0, 0.5, -1)`.
+/// A vector as the book writes it: `(0, 0.5, -1)`, or `(0 ; 0,5 ; -1)` in French.
 pub fn vec(v: Vec3) -> String {
-    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+    let s = separator();
+    format!("({}{s}{}{s}{})", num(v.x), num(v.y), num(v.z))
 }
 
 /// Whether two optional distances agree: both absent, or both within `tolerance`.
@@ -60,16 +66,19 @@ pub fn same_distance(gave: Option<Real>, expected: Option<Real>, tolerance: Real
     }
 }
 
-/// An optional value as the book writes it: the value, or `no hit`.
+/// An optional distance as the book writes it: `t = 4`, or `no hit`.
 pub fn maybe(t: Option<Real>) -> String {
-    t.map_or("no hit".into(), |t| format!("t = {}", num(t)))
+    t.map_or(say!("no hit", "aucun impact"), |t| {
+        format!("t = {}", num(t))
+    })
 }
 
 /// A nearest hit (its distance and object) as the book writes it: `sphere 1 at
 /// t = 4`, or `no hit`.
 pub fn nearest(hit: Option<(Real, usize)>) -> String {
-    hit.map_or("no hit".into(), |(t, i)| {
-        format!("sphere {i} at t = {}", num(t))
+    hit.map_or(say!("no hit", "aucun impact"), |(t, i)| {
+        let t = num(t);
+        say!("sphere {i} at t = {t}", "sphère {i} en t = {t}")
     })
 }
 

@@ -13,6 +13,7 @@
 //! cargo test --test exercises                 # the whole checklist
 //! cargo test --test exercises -- s3_2         # the lines whose name contains s3_2
 //! cargo test --test exercises -- --write-references   # after an intended change
+//! cargo test --test exercises -- --lang fr    # in French (or LANG=fr_FR.UTF-8)
 //! ```
 
 mod checklist;
@@ -31,6 +32,7 @@ mod s5;
 mod s6;
 #[cfg(feature = "s7")]
 mod s7;
+mod words;
 
 use std::process::ExitCode;
 
@@ -54,13 +56,18 @@ const SESSIONS: &[&[checklist::Exercise]] = &[
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
+    if let Err(why) = words::choose(&args) {
+        eprintln!("{why}");
+        return ExitCode::from(2);
+    }
     if args.iter().any(|a| a == "--write-references") {
         return images::write_references();
     }
     let filters: Vec<&str> = args
         .iter()
-        .map(String::as_str)
-        .filter(|a| !a.starts_with('-'))
+        .enumerate()
+        .filter(|(at, a)| !a.starts_with('-') && (*at == 0 || args[at - 1] != "--lang"))
+        .map(|(_, a)| a.as_str())
         .collect();
     checklist::run(SESSIONS, &filters)
 }

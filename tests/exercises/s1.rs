@@ -21,6 +21,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "white-disk",
         needs: &[],
         check: pixel_direction,
+        french: [
+            "le rayon de la caméra à travers un pixel",
+            "séance 1, «\u{a0}Un disque blanc\u{a0}»",
+        ],
     },
     Exercise {
         id: "s1.2",
@@ -28,6 +32,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "white-disk",
         needs: &[],
         check: sphere_distance,
+        french: [
+            "la distance rayon-sphère",
+            "séance 1, «\u{a0}Un disque blanc\u{a0}»",
+        ],
     },
     Exercise {
         id: "s1.3",
@@ -35,6 +43,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "spheres",
         needs: &["s1.2"],
         check: nearest_sphere,
+        french: [
+            "l'intersection la plus proche",
+            "séance 1, «\u{a0}Plusieurs sphères\u{a0}»",
+        ],
     },
     Exercise {
         id: "s1.4",
@@ -42,6 +54,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "shading",
         needs: &[],
         check: lambert,
+        french: [
+            "l'ombrage de Lambert avec la décroissance de la lumière",
+            "séance 1, «\u{a0}Ombrage de Lambert\u{a0}»",
+        ],
     },
 ];
 

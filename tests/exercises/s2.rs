@@ -17,6 +17,7 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "gamma",
         needs: &[],
         check: gamma,
+        french: ["le gamma", "séance 2, «\u{a0}Correction gamma\u{a0}»"],
     },
     Exercise {
         id: "s2.2",
@@ -24,6 +25,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "shadows",
         needs: &[],
         check: spawn,
+        french: [
+            "l'origine décalée d'un nouveau rayon",
+            "séance 2, «\u{a0}Ombres portées\u{a0}»",
+        ],
     },
     Exercise {
         id: "s2.3",
@@ -31,6 +36,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "shadows",
         needs: &["s2.2"],
         check: spawn_towards,
+        french: [
+            "le rayon d'ombre vers la source",
+            "séance 2, «\u{a0}Ombres portées\u{a0}»",
+        ],
     },
     Exercise {
         id: "s2.4",
@@ -38,6 +47,7 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "mirror",
         needs: &[],
         check: mirror,
+        french: ["la direction réfléchie", "séance 2, «\u{a0}Miroirs\u{a0}»"],
     },
     Exercise {
         id: "s2.5",
@@ -45,6 +55,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "glass",
         needs: &[],
         check: glass,
+        french: [
+            "la réfraction et la réflexion totale interne",
+            "séance 2, «\u{a0}Verre\u{a0}»",
+        ],
     },
 ];
 

@@ -19,6 +19,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "indirect",
         needs: &[],
         check: cosine_direction,
+        french: [
+            "la direction pondérée par le cosinus",
+            "séance 3, «\u{a0}Éclairage indirect\u{a0}»",
+        ],
     },
     Exercise {
         id: "s3.2",
@@ -26,6 +30,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "indirect",
         needs: &[],
         check: frame,
+        french: [
+            "le repère autour de la normale",
+            "séance 3, «\u{a0}Éclairage indirect\u{a0}»",
+        ],
     },
     Exercise {
         id: "s3.3",
@@ -33,6 +41,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "indirect",
         needs: &["s3.1", "s3.2"],
         check: indirect_bounce,
+        french: [
+            "le rebond indirect",
+            "séance 3, «\u{a0}Éclairage indirect\u{a0}»",
+        ],
     },
     Exercise {
         id: "s3.4",
@@ -40,6 +52,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "antialiasing",
         needs: &[],
         check: gaussian,
+        french: [
+            "le filtre gaussien du pixel",
+            "séance 3, «\u{a0}Anticrénelage\u{a0}»",
+        ],
     },
 ];
 

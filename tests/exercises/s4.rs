@@ -16,6 +16,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "light-sampling",
         needs: &[],
         check: cone_sample,
+        french: [
+            "une direction dans le cône de la source",
+            "séance 4, «\u{a0}Échantillonnage de la lumière\u{a0}»",
+        ],
     },
     Exercise {
         id: "s4.2",
@@ -23,6 +27,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "light-sampling",
         needs: &[],
         check: cone_pdf,
+        french: [
+            "la densité du cône",
+            "séance 4, «\u{a0}Échantillonnage de la lumière\u{a0}»",
+        ],
     },
     Exercise {
         id: "s4.3",
@@ -30,6 +38,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "depth-of-field",
         needs: &[],
         check: disk,
+        french: [
+            "un point de la lentille",
+            "séance 4, «\u{a0}Profondeur de champ\u{a0}»",
+        ],
     },
     Exercise {
         id: "s4.4",
@@ -37,6 +49,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "depth-of-field",
         needs: &["s4.3"],
         check: thin_lens,
+        french: [
+            "la lentille mince",
+            "séance 4, «\u{a0}Profondeur de champ\u{a0}»",
+        ],
     },
 ];
 

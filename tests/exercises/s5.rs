@@ -14,6 +14,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "mesh",
         needs: &[],
         check: triangle,
+        french: [
+            "le test rayon-triangle",
+            "séance 5, «\u{a0}Un maillage\u{a0}»",
+        ],
     },
     Exercise {
         id: "s5.2",
@@ -21,6 +25,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "mesh-bbox",
         needs: &[],
         check: slab,
+        french: [
+            "le test des tranches",
+            "séance 5, «\u{a0}La boîte englobante\u{a0}»",
+        ],
     },
 ];
 

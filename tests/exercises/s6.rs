@@ -19,6 +19,7 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "bvh",
         needs: &[],
         check: build,
+        french: ["la construction de la BVH", "séance 6, «\u{a0}BVH\u{a0}»"],
     },
     Exercise {
         id: "s6.2",
@@ -26,6 +27,7 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "bvh",
         needs: &[],
         check: walk,
+        french: ["le parcours de la BVH", "séance 6, «\u{a0}BVH\u{a0}»"],
     },
     Exercise {
         id: "s6.3",
@@ -33,6 +35,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "smooth-normals",
         needs: &[],
         check: smooth_normal,
+        french: [
+            "la normale interpolée",
+            "séance 6, «\u{a0}Normales lissées\u{a0}»",
+        ],
     },
 ];
 

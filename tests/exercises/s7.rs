@@ -16,6 +16,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "textures",
         needs: &[],
         check: lookup,
+        french: [
+            "la lecture de la texture",
+            "séance 7, «\u{a0}Textures\u{a0}»",
+        ],
     },
     Exercise {
         id: "s7.2",
@@ -23,6 +27,10 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "camera",
         needs: &[],
         check: orientation,
+        french: [
+            "l'orientation de la caméra",
+            "séance 7, «\u{a0}Le déplacement de la caméra\u{a0}»",
+        ],
     },
 ];
 
