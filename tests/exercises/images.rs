@@ -22,6 +22,8 @@ use raycourse::scene::Settings;
 use raycourse::{Film, Overrides, Stage, render, stages};
 
 use crate::known::Outcome;
+use crate::say;
+use crate::words::{decimal, separator};
 
 /// The side of the Monte Carlo images compared, in pixels: four blocks of 8 x 8
 /// pixels across.
@@ -107,12 +109,17 @@ pub fn check(stage: &Stage) -> Outcome {
     found.map_err(|why| {
         let saved = displayed(&film, gamma).save(&yours).is_ok();
         let place = if saved {
-            format!("; yours is {}", yours.display())
+            say!(
+                "; yours is {}",
+                "\u{a0}; votre image est {}",
+                yours.display()
+            )
         } else {
             String::new()
         };
-        format!(
+        say!(
             "the stage `{}` at {} x {} differs from {}{place}: {why}",
+            "l'étape `{}` en {} x {} diffère de {}{place}\u{a0}: {why}",
             stage.name,
             film.width,
             film.height,
@@ -128,8 +135,9 @@ fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome
         return Ok(());
     }
     let (worst, at) = worst_pixel(yours, reference);
-    let mut why = format!(
+    let mut why = say!(
         "{} of {} pixels differ by more than {TOLERANCE} display levels (the most, {worst} levels, at column {}, row {})",
+        "{} pixels sur {} diffèrent de plus de {TOLERANCE} niveaux d'affichage (l'écart maximal, {worst} niveaux, en colonne {}, ligne {})",
         outcome.differs.iter().filter(|d| **d).count(),
         outcome.differs.len(),
         at.0,
@@ -137,14 +145,14 @@ fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome
     );
     if let Some(hint) = flip_hint(yours, reference).or_else(|| gamma_hint(yours, reference, gamma))
     {
-        why += &format!("; {hint}");
+        why += &then(&hint);
     } else if let Some(hint) = brightness_hint(
         &Linear::from_rgb8(yours, gamma),
         &Linear::from_rgb8(reference, gamma),
         gamma,
         false,
     ) {
-        why += &format!("; {hint}");
+        why += &then(&hint);
     }
     Err(why)
 }
@@ -157,8 +165,9 @@ fn compare_noisy(yours: &Film, reference: &Linear, settings: &Settings) -> Outco
     if !outcome.image_differs {
         return Ok(());
     }
-    let mut why = format!(
+    let mut why = say!(
         "{} of {} blocks of 8 x 8 pixels differ beyond the noise",
+        "{} blocs de 8 x 8 pixels sur {} diffèrent au-delà du bruit",
         outcome.differs.iter().filter(|d| **d).count(),
         outcome.differs.len()
     );
@@ -167,9 +176,14 @@ fn compare_noisy(yours: &Film, reference: &Linear, settings: &Settings) -> Outco
     if let Some(hint) = flip_hint(&shown, &reference_shown)
         .or_else(|| brightness_hint(&linear, reference, gamma, settings.indirect))
     {
-        why += &format!("; {hint}");
+        why += &then(&hint);
     }
     Err(why)
+}
+
+/// `; hint`, a hint after what differs, in the checklist's language.
+fn then(hint: &str) -> String {
+    say!("; {hint}", "\u{a0}; {hint}")
 }
 
 /// The largest difference of a channel, and where.
@@ -190,9 +204,15 @@ fn flip_hint(yours: &RgbImage, reference: &RgbImage) -> Option<String> {
     let upside_down = image::imageops::flip_vertical(yours);
     let mirrored = image::imageops::flip_horizontal(yours);
     if !compare_pixels(&upside_down, reference, 2 * TOLERANCE).image_differs {
-        Some("it is the reference upside down: row 0 is the top of the image, so the pixel's height counts from the bottom, i = H - 1 - row".into())
+        Some(say!(
+            "it is the reference upside down: row 0 is the top of the image, so the pixel's height counts from the bottom, i = H - 1 - row",
+            "l'image est la référence à l'envers\u{a0}: la ligne 0 (row) est le haut de l'image, donc la hauteur du pixel se compte depuis le bas, i = H - 1 - row"
+        ))
     } else if !compare_pixels(&mirrored, reference, 2 * TOLERANCE).image_differs {
-        Some("it is the reference mirrored left to right: column j grows to the right, x = j - W/2 + 0.5".into())
+        Some(say!(
+            "it is the reference mirrored left to right: column j grows to the right, x = j - W/2 + 0.5",
+            "l'image est la référence inversée de gauche à droite\u{a0}: la colonne j croît vers la droite, x = j - W/2 + 0.5"
+        ))
     } else {
         None
     }
@@ -213,11 +233,16 @@ fn gamma_hint(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Option<Str
     };
     let g = to_double(gamma);
     if !compare_pixels(yours, &remap(1.0), 2 * TOLERANCE).image_differs {
-        Some(format!(
-            "it shows the radiance without the display's gamma: a pixel is L^(1/gamma), here gamma = {gamma}"
+        let gamma = decimal(gamma.to_string());
+        Some(say!(
+            "it shows the radiance without the display's gamma: a pixel is L^(1/gamma), here gamma = {gamma}",
+            "l'image montre la luminance sans le gamma de l'écran\u{a0}: un pixel vaut L^(1/gamma), ici gamma = {gamma}"
         ))
     } else if !compare_pixels(yours, &remap(1.0 / (g * g)), 2 * TOLERANCE).image_differs {
-        Some("the display's gamma is applied twice: a pixel is L^(1/gamma), once".into())
+        Some(say!(
+            "the display's gamma is applied twice: a pixel is L^(1/gamma), once",
+            "le gamma de l'écran est appliqué deux fois\u{a0}: un pixel vaut L^(1/gamma), une seule fois"
+        ))
     } else {
         None
     }
@@ -237,25 +262,42 @@ fn brightness_hint(
     let near = |target: f64| (mean / target - 1.0).abs() < 0.08;
     let pi = std::f64::consts::PI;
     let hint = if near(pi) {
-        "about pi times too bright: a diffuse surface reflects albedo / pi (the BRDF), and the light's power spreads over 4 pi r^2"
+        say!(
+            "about pi times too bright: a diffuse surface reflects albedo / pi (the BRDF), and the light's power spreads over 4 pi r^2",
+            "l'image est environ pi fois trop claire\u{a0}: une surface diffuse renvoie albédo / pi (la BRDF), et la puissance de la source se répartit sur 4 pi r^2"
+        )
     } else if near(1.0 / pi) {
-        "about pi times too dark: is 1 / pi counted twice, or the cosine-weighted pdf's pi not cancelled?"
+        say!(
+            "about pi times too dark: is 1 / pi counted twice, or the cosine-weighted pdf's pi not cancelled?",
+            "l'image est environ pi fois trop sombre\u{a0}: le 1 / pi est-il compté deux fois, ou le pi de la densité de probabilité (pdf) pondérée par le cosinus n'est-il pas simplifié\u{a0}?"
+        )
     } else if bounces && (near(2.0) || near(0.5)) {
-        "about twice too bright or too dark: the weight of a bounce must match how its direction was drawn (for a cosine-weighted direction the cosine and pi cancel, leaving the albedo)"
+        say!(
+            "about twice too bright or too dark: the weight of a bounce must match how its direction was drawn (for a cosine-weighted direction the cosine and pi cancel, leaving the albedo)",
+            "l'image est environ deux fois trop claire ou trop sombre\u{a0}: le poids d'un rebond doit correspondre à la façon dont sa direction a été tirée (pour une direction pondérée par le cosinus, le cosinus et pi se simplifient, il reste l'albédo)"
+        )
     } else if (mean - 1.0).abs() > 0.05 {
-        return Some(format!(
-            "{:.0}% {} than the reference overall (per channel {:.2}x, {:.2}x, {:.2}x)",
-            (mean - 1.0).abs() * 100.0,
-            if mean > 1.0 { "brighter" } else { "darker" },
-            ratio[0],
-            ratio[1],
-            ratio[2]
-        ));
+        let percent = format!("{:.0}", (mean - 1.0).abs() * 100.0);
+        let [r, g, b] = ratio.map(|x| decimal(format!("{x:.2}")));
+        let s = separator();
+        return Some(if mean > 1.0 {
+            say!(
+                "{percent}% brighter than the reference overall (per channel {r}x, {g}x, {b}x)",
+                "l'image est {percent}\u{a0}% plus claire que la référence dans l'ensemble (par canal {r}x{s}{g}x{s}{b}x)"
+            )
+        } else {
+            say!(
+                "{percent}% darker than the reference overall (per channel {r}x, {g}x, {b}x)",
+                "l'image est {percent}\u{a0}% plus sombre que la référence dans l'ensemble (par canal {r}x{s}{g}x{s}{b}x)"
+            )
+        });
     } else {
         return None;
     };
-    Some(format!(
-        "{hint} (brightness against the reference: {mean:.2}x)"
+    let mean = decimal(format!("{mean:.2}"));
+    Some(say!(
+        "{hint} (brightness against the reference: {mean}x)",
+        "{hint} (luminosité par rapport à la référence\u{a0}: {mean}x)"
     ))
 }
 
@@ -263,7 +305,7 @@ fn brightness_hint(
 /// `L = (v / 256)^gamma`.
 fn read_16(path: &Path, gamma: Real) -> Result<Linear, String> {
     let image = image::open(path)
-        .map_err(|e| format!("{}: {e}", path.display()))?
+        .map_err(|e| unreadable(path, &e))?
         .into_rgb16();
     let gamma = to_double(gamma);
     Ok(Linear {
@@ -279,8 +321,13 @@ fn read_16(path: &Path, gamma: Real) -> Result<Linear, String> {
 
 fn read_8(path: &Path) -> Result<RgbImage, String> {
     Ok(image::open(path)
-        .map_err(|e| format!("{}: {e}", path.display()))?
+        .map_err(|e| unreadable(path, &e))?
         .into_rgb8())
+}
+
+/// A reference that cannot be read: `path: error`.
+fn unreadable(path: &Path, error: &image::ImageError) -> String {
+    say!("{}: {error}", "{}\u{a0}: {error}", path.display())
 }
 
 /// A linear picture as the display shows it, 8 bits.

@@ -68,7 +68,7 @@ pub fn same_distance(gave: Option<Real>, expected: Option<Real>, tolerance: Real
 
 /// An optional distance as the book writes it: `t = 4`, or `no hit`.
 pub fn maybe(t: Option<Real>) -> String {
-    t.map_or(say!("no hit", "aucun impact"), |t| {
+    t.map_or(say!("no hit", "aucune intersection"), |t| {
         format!("t = {}", num(t))
     })
 }
@@ -76,7 +76,7 @@ pub fn maybe(t: Option<Real>) -> String {
 /// A nearest hit (its distance and object) as the book writes it: `sphere 1 at
 /// t = 4`, or `no hit`.
 pub fn nearest(hit: Option<(Real, usize)>) -> String {
-    hit.map_or(say!("no hit", "aucun impact"), |(t, i)| {
+    hit.map_or(say!("no hit", "aucune intersection"), |(t, i)| {
         let t = num(t);
         say!("sphere {i} at t = {t}", "sphère {i} en t = {t}")
     })

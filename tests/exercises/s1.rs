@@ -12,6 +12,8 @@ use raycourse::{Overrides, parse_scene};
 
 use crate::checklist::Exercise;
 use crate::known::{Outcome, close_vec, ensure, maybe, nearest, same_distance, vec};
+use crate::say;
+use crate::words::decimal;
 
 /// Session 1's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -67,26 +69,39 @@ pub const EXERCISES: &[Exercise] = &[
 fn pixel_direction() -> Outcome {
     let camera = Camera::new(Vec3::ZERO, PI / 2.0, 4, 2);
     let cases = [
-        ((0, 0), Vec3::new(-1.5, 0.5, -1.0), "top left"),
-        ((1, 3), Vec3::new(1.5, -0.5, -1.0), "bottom right"),
+        (
+            (0, 0),
+            Vec3::new(-1.5, 0.5, -1.0),
+            ["the top left", "en haut à gauche"],
+        ),
+        (
+            (1, 3),
+            Vec3::new(1.5, -0.5, -1.0),
+            ["the bottom right", "en bas à droite"],
+        ),
         (
             (0, 2),
             Vec3::new(0.5, 0.5, -1.0),
-            "top, right of the centre",
+            [
+                "the top, right of the centre",
+                "en haut et à droite du centre",
+            ],
         ),
     ];
-    for ((row, column), expected, place) in cases {
+    for ((row, column), expected, [place, lieu]) in cases {
         let gave = camera.pixel_direction(row, column);
         ensure(gave.length() > 0.0 && gave.is_finite(), || {
-            format!(
+            say!(
                 "pixel (row {row}, column {column}) gave the direction {}",
+                "le pixel (ligne {row}, colonne {column}) donne la direction {}",
                 vec(gave)
             )
         })?;
         // Any length is right: only the direction matters.
         close_vec(
-            &format!(
-                "the direction through pixel (row {row}, column {column}), the {place} of a 4 x 2 image with a 90-degree field of view, normalised"
+            &say!(
+                "the direction through pixel (row {row}, column {column}), {place} of a 4 x 2 image with a 90-degree field of view, normalised",
+                "la direction à travers le pixel (ligne {row}, colonne {column}), {lieu} d'une image de 4 x 2 avec un champ de vision de 90 degrés, normalisée"
             ),
             gave.normalize(),
             expected.normalize(),
@@ -115,32 +130,56 @@ pub fn sphere(centre: Vec3, radius: Real) -> Sphere {
 fn sphere_distance() -> Outcome {
     let z = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
-        ("in front", Vec3::new(0.0, 0.0, -5.0), 1.0, z, Some(4.0)),
-        ("around the eye", Vec3::ZERO, 2.0, z, Some(2.0)),
-        ("behind the eye", Vec3::new(0.0, 0.0, 5.0), 1.0, z, None),
         (
-            "beside the ray, 2.24 from its line",
+            ["in front", "devant l'œil"],
+            Vec3::new(0.0, 0.0, -5.0),
+            1.0,
+            z,
+            Some(4.0),
+        ),
+        (
+            ["around the eye", "autour de l'œil"],
+            Vec3::ZERO,
+            2.0,
+            z,
+            Some(2.0),
+        ),
+        (
+            ["behind the eye", "derrière l'œil"],
+            Vec3::new(0.0, 0.0, 5.0),
+            1.0,
+            z,
+            None,
+        ),
+        (
+            [
+                "beside the ray, 2.24 from its line",
+                "à côté du rayon, à 2,24 de la droite qui le porte",
+            ],
             Vec3::new(0.0, 0.0, -5.0),
             1.0,
             Vec3::new(0.0, 0.5, -1.0),
             None,
         ),
         (
-            "on an oblique ray",
+            ["on an oblique ray", "sur un rayon oblique"],
             Vec3::new(0.0, 3.0, -4.0),
             1.0,
             Vec3::new(0.0, 0.6, -0.8),
             Some(4.0),
         ),
     ];
-    for (what, centre, radius, direction, expected) in cases {
+    for ([what, quoi], centre, radius, direction, expected) in cases {
         let ray = Ray::new(Vec3::ZERO, direction);
         let gave = sphere(centre, radius).intersect(&ray);
         let right = same_distance(gave, expected, 1e-4);
         ensure(right, || {
-            format!(
-                "a sphere of radius {radius} at {} {what}, the ray from (0, 0, 0) along {}: gave {}, expected {}",
+            let radius = decimal(radius.to_string());
+            say!(
+                "a sphere of radius {radius} at {} {what}, the ray from {} along {}: gave {}, expected {}",
+                "une sphère de rayon {radius} en {}, {quoi}, le rayon issu de {} selon {}\u{a0}: donne {}, attendu {}",
                 vec(centre),
+                vec(Vec3::ZERO),
                 vec(ray.direction),
                 maybe(gave),
                 maybe(expected)
@@ -172,18 +211,22 @@ fn nearest_sphere() -> Outcome {
     ensure(
         gave.is_some_and(|(t, i)| i == 1 && (t - 4.0).abs() < 1e-4),
         || {
-            format!(
-                "spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {}, expected sphere 1 at t = 4",
-                nearest(gave)
+            say!(
+                "spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {}, expected {}",
+                "des sphères en z = -10, -5 et 3 (numéros 0, 1, 2), le rayon issu de l'origine selon -z\u{a0}: donne {}, attendu {}",
+                nearest(gave),
+                nearest(Some((4.0, 1)))
             )
         },
     )?;
     let up = Ray::new(Vec3::ZERO, Vec3::new(0.0, 1.0, 0.0));
     let gave = room.nearest_sphere(&up);
     ensure(gave.is_none(), || {
-        format!(
-            "the same spheres, the ray along +y: gave {}, expected no hit",
-            nearest(gave)
+        say!(
+            "the same spheres, the ray along +y: gave {}, expected {}",
+            "les mêmes sphères, le rayon selon +y\u{a0}: donne {}, attendu {}",
+            nearest(gave),
+            nearest(None)
         )
     })
 }
@@ -199,28 +242,46 @@ fn lambert() -> Outcome {
     let albedo = Colour::new(0.5, 0.25, 1.0);
     let up = Vec3::new(0.0, 1.0, 0.0);
     let cases = [
-        ("facing the light 10 away", Vec3::ZERO, up, albedo),
         (
-            "tilted by 45 degrees",
+            [
+                "facing the light 10 away",
+                "face à la source, à une distance de 10",
+            ],
+            Vec3::ZERO,
+            up,
+            albedo,
+        ),
+        (
+            ["tilted by 45 degrees", "inclinée de 45 degrés"],
             Vec3::ZERO,
             Vec3::new(1.0, 1.0, 0.0).normalize(),
             albedo / (2.0 as Real).sqrt(),
         ),
         (
-            "facing the light 20 away",
+            [
+                "facing the light 20 away",
+                "face à la source, à une distance de 20",
+            ],
             Vec3::new(0.0, -10.0, 0.0),
             up,
             albedo / 4.0,
         ),
-        ("facing away", Vec3::ZERO, -up, Colour::ZERO),
+        (
+            ["facing away", "dos à la source"],
+            Vec3::ZERO,
+            -up,
+            Colour::ZERO,
+        ),
     ];
-    for (what, point, normal, expected) in cases {
+    for ([what, quoi], point, normal, expected) in cases {
         close_vec(
-            &format!(
-                "albedo {} at {}, normal {}, {what}, under a light of power 400 pi^2 at (0, 10, 0)",
+            &say!(
+                "albedo {} at {}, normal {}, {what}, under a light of power 400 pi^2 at {}",
+                "albédo {} en {}, normale {}, {quoi}, sous une source de puissance 400 pi^2 en {}",
                 vec(albedo),
                 vec(point),
-                vec(normal)
+                vec(normal),
+                vec(light.position)
             ),
             light.lambert(point, normal, albedo),
             expected,

@@ -8,6 +8,8 @@ use raycourse::render::film::display;
 use crate::checklist::Exercise;
 use crate::known::{Outcome, close, close_vec, ensure, maybe, vec};
 use crate::s1::sphere;
+use crate::say;
+use crate::words::decimal;
 
 /// Session 2's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -79,40 +81,51 @@ fn gamma() -> Outcome {
     for (radiance, gamma, expected) in cases {
         let gave = display(radiance, gamma);
         ensure(gave == expected, || {
-            format!("radiance {radiance} with gamma {gamma}: gave {gave}, expected {expected}")
+            let (radiance, gamma) = (decimal(radiance.to_string()), decimal(gamma.to_string()));
+            say!(
+                "radiance {radiance} with gamma {gamma}: gave {gave}, expected {expected}",
+                "luminance {radiance} avec un gamma de {gamma}\u{a0}: donne {gave}, attendu {expected}"
+            )
         })?;
     }
     Ok(())
 }
 
 /// The hit of a ray from the eye on a sphere of radius 1 at distance 5, and of a
-/// wall-sized sphere (radius 990, 10 away) like the rooms' walls.
+/// wall-sized sphere (radius 990, 10 away) like the rooms' walls, with where it is
+/// in words: `on a sphere of radius 1 at (0, 0, -5)`.
 fn hits() -> Vec<(
-    &'static str,
+    String,
     raycourse::geometry::Sphere,
     raycourse::geometry::Hit,
 )> {
     [
+        (Vec3::new(0.0, 0.0, -5.0), 1.0, Vec3::new(0.05, 0.1, -1.0)),
         (
-            "a sphere of radius 1 at (0, 0, -5)",
-            Vec3::new(0.0, 0.0, -5.0),
-            1.0,
-            Vec3::new(0.05, 0.1, -1.0),
-        ),
-        (
-            "a wall, a sphere of radius 990 at (0, 0, -1000)",
             Vec3::new(0.0, 0.0, -1000.0),
             990.0,
             Vec3::new(0.3, -0.2, -1.0),
         ),
     ]
     .into_iter()
-    .map(|(what, centre, radius, direction)| {
+    .map(|(centre, radius, direction)| {
         let ball = sphere(centre, radius);
         let ray = Ray::new(Vec3::ZERO, direction);
         let t = ball
             .intersect(&ray)
             .expect("the checks' rays hit their spheres");
+        let at = vec(centre);
+        let what = if radius > 100.0 {
+            say!(
+                "on a wall, a sphere of radius {radius} at {at}",
+                "sur un mur, une sphère de rayon {radius} en {at}"
+            )
+        } else {
+            say!(
+                "on a sphere of radius {radius} at {at}",
+                "sur une sphère de rayon {radius} en {at}"
+            )
+        };
         (what, ball, ball.hit_at(&ray, t, 0))
     })
     .collect()
@@ -126,29 +139,33 @@ fn spawn() -> Outcome {
         let outward = (hit.point - ball.centre).normalize();
         let out = hit.spawn((outward + Vec3::new(0.0, 0.0, 0.5)).normalize());
         let inward = hit.spawn(-outward);
-        for (way, ray) in [("out", out), ("in", inward)] {
+        for ([way, sens], ray) in [(["out", "sortant"], out), (["in", "entrant"], inward)] {
             ensure(ray.origin.distance(hit.point) < 1e-3, || {
-                format!(
-                    "on {what}, the ray going {way} starts at {}, {} from the hit point {}: expected a start within 1e-3",
+                say!(
+                    "{what}, the ray going {way} starts at {}, {} from the hit point {}: expected a start within 1e-3",
+                    "{what}, le rayon {sens} part de {}, à {} du point d'intersection {}\u{a0}: attendu un départ à moins de 1e-3",
                     vec(ray.origin),
-                    ray.origin.distance(hit.point),
+                    decimal(ray.origin.distance(hit.point).to_string()),
                     vec(hit.point)
                 )
             })?;
         }
         let again = ball.intersect(&out);
         ensure(again.is_none(), || {
-            format!(
-                "on {what}, a ray leaving outwards from the hit point meets the sphere again at {}: expected no hit (its origin must be pushed off the surface, outwards)",
-                maybe(again)
+            say!(
+                "{what}, a ray leaving outwards from the hit point meets the sphere again at {}: expected {} (its origin must be pushed off the surface, outwards)",
+                "{what}, un rayon qui quitte le point d'intersection vers l'extérieur rencontre de nouveau la sphère en {}\u{a0}: attendu {} (son origine doit être décalée hors de la surface, vers l'extérieur)",
+                maybe(again),
+                maybe(None)
             )
         })?;
         let through = ball.intersect(&inward);
         ensure(through.is_some_and(|t| t > 1e-3), || {
-            format!(
-                "on {what}, a ray going into the sphere from the hit point gave {}: expected the far side, about {} away (its origin must be pushed off the surface, inwards)",
+            say!(
+                "{what}, a ray going into the sphere from the hit point gave {}: expected the far side, about {} away (its origin must be pushed off the surface, inwards)",
+                "{what}, un rayon qui entre dans la sphère depuis le point d'intersection donne {}\u{a0}: attendu le côté opposé, à environ {} (son origine doit être décalée hors de la surface, vers l'intérieur)",
                 maybe(through),
-                2.0 * ball.radius
+                decimal((2.0 * ball.radius).to_string())
             )
         })?;
     }
@@ -162,20 +179,28 @@ fn spawn_towards() -> Outcome {
         let light = hit.point + Vec3::new(3.0, 4.0, 12.0);
         let (ray, distance) = hit.spawn_towards(light);
         close_vec(
-            &format!("on {what}, the direction towards a light 13 away along (3, 4, 12)"),
+            &say!(
+                "{what}, the direction towards a light 13 away along {}",
+                "{what}, la direction vers une source à une distance de 13 selon {}",
+                vec(Vec3::new(3.0, 4.0, 12.0))
+            ),
             ray.direction,
             Vec3::new(3.0, 4.0, 12.0) / 13.0,
             1e-4,
         )?;
         close(
-            &format!("on {what}, the distance to that light"),
+            &say!(
+                "{what}, the distance to that light",
+                "{what}, la distance à cette source"
+            ),
             distance,
             13.0,
             1e-3,
         )?;
         ensure(ray.origin.distance(hit.point) < 1e-3, || {
-            format!(
-                "on {what}, the shadow ray starts at {}, not near the hit point {}",
+            say!(
+                "{what}, the shadow ray starts at {}, not near the hit point {}",
+                "{what}, le rayon d'ombre part de {}, et non près du point d'intersection {}",
                 vec(ray.origin),
                 vec(hit.point)
             )
@@ -203,7 +228,12 @@ fn mirror() -> Outcome {
     ];
     for (d, n, expected) in cases {
         close_vec(
-            &format!("d = {} reflected about N = {}", vec(d), vec(n)),
+            &say!(
+                "d = {} reflected about N = {}",
+                "d = {} réfléchi par rapport à N = {}",
+                vec(d),
+                vec(n)
+            ),
             reflect(d, n),
             expected,
             1e-5,
@@ -225,20 +255,34 @@ fn glass() -> Outcome {
     let third = 1.0 / 3.0;
     let cases = [
         (
-            "30 degrees, air into glass",
+            [
+                "30 degrees, air into glass",
+                "30 degrés, de l'air vers le verre",
+            ],
             at(30.0),
             1.0 / 1.5,
             Some(Vec3::new(third, -(8.0 as Real / 9.0).sqrt(), 0.0)),
         ),
         (
-            "straight in",
+            ["straight in", "en incidence normale"],
             at(0.0),
             1.0 / 1.5,
             Some(Vec3::new(0.0, -1.0, 0.0)),
         ),
-        ("45 degrees, glass into air", at(45.0), 1.5, None),
         (
-            "40 degrees, glass into air",
+            [
+                "45 degrees, glass into air",
+                "45 degrés, du verre vers l'air",
+            ],
+            at(45.0),
+            1.5,
+            None,
+        ),
+        (
+            [
+                "40 degrees, glass into air",
+                "40 degrés, du verre vers l'air",
+            ],
             at(40.0),
             1.5,
             Some(at((1.5 * (40.0 as Real).to_radians().sin())
@@ -246,18 +290,29 @@ fn glass() -> Outcome {
                 .to_degrees())),
         ),
     ];
-    for (what, d, eta, expected) in cases {
+    for ([what, quoi], d, eta, expected) in cases {
         let gave = refract(d, n, eta);
         let right = match (gave, expected) {
             (Some(g), Some(e)) => (g - e).abs().max_element() < 1e-4,
             (None, None) => true,
             _ => false,
         };
-        let show = |v: Option<Vec3>| v.map_or("none (total internal reflection)".into(), vec);
+        let show = |v: Option<Vec3>| {
+            v.map_or(
+                say!(
+                    "none (total internal reflection)",
+                    "aucune direction (réflexion totale interne)"
+                ),
+                vec,
+            )
+        };
         ensure(right, || {
-            format!(
-                "{what}: d = {}, N = (0, 1, 0), eta = n1 / n2 = {eta}: gave {}, expected {}",
+            let eta = decimal(eta.to_string());
+            say!(
+                "{what}: d = {}, N = {}, eta = n1 / n2 = {eta}: gave {}, expected {}",
+                "{quoi}\u{a0}: d = {}, N = {}, eta = n1 / n2 = {eta}\u{a0}: donne {}, attendu {}",
                 vec(d),
+                vec(n),
                 show(gave),
                 show(expected)
             )

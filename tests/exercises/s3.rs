@@ -10,6 +10,8 @@ use raycourse::maths::{Colour, PI, Real, Vec3};
 use crate::checklist::Exercise;
 use crate::known::{Outcome, close, close_vec, ensure, grid_mean, num, vec};
 use crate::s1::scene;
+use crate::say;
+use crate::words::{decimal, separator};
 
 /// Session 3's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -76,20 +78,34 @@ fn cosine_direction() -> Outcome {
         [w.z, w.z * w.z, w.x, w.y, w.x * w.x]
     });
     if let Some((u1, u2, w)) = worst {
-        return Err(format!(
-            "(u1, u2) = ({}, {}) gave {}: expected a unit vector with z >= 0",
-            num(u1),
-            num(u2),
+        let (u1, u2, s) = (num(u1), num(u2), separator());
+        return Err(say!(
+            "(u1, u2) = ({u1}, {u2}) gave {}: expected a unit vector with z >= 0",
+            "(u1{s}u2) = ({u1}{s}{u2}) donne {}\u{a0}: attendu un vecteur unitaire avec z >= 0",
             vec(w)
         ));
     }
-    close("the mean of cos(theta) = z", z, 2.0 / 3.0, 0.01).map_err(|e| {
-        format!("{e}; uniform directions would give 1/2: the density must be cos(theta) / pi")
+    close(
+        &say!("the mean of cos(theta) = z", "la moyenne de cos(theta) = z"),
+        z,
+        2.0 / 3.0,
+        0.01,
+    )
+    .map_err(|e| {
+        say!(
+            "{e}; uniform directions would give 1/2: the density must be cos(theta) / pi",
+            "{e}\u{a0}; des directions uniformes donneraient 1/2\u{a0}: la densité doit être cos(theta) / pi"
+        )
     })?;
-    close("the mean of cos^2(theta)", z2, 0.5, 0.01)?;
-    close("the mean of x", x, 0.0, 0.01)?;
-    close("the mean of y", y, 0.0, 0.01)?;
-    close("the mean of x^2", x2, 0.25, 0.01)
+    close(&mean_of("cos^2(theta)"), z2, 0.5, 0.01)?;
+    close(&mean_of("x"), x, 0.0, 0.01)?;
+    close(&mean_of("y"), y, 0.0, 0.01)?;
+    close(&mean_of("x^2"), x2, 0.25, 0.01)
+}
+
+/// `the mean of x`, in the checklist's language.
+pub fn mean_of(what: &str) -> String {
+    say!("the mean of {what}", "la moyenne de {what}")
 }
 
 /// The frame of a normal `N`: two tangents `T1`, `T2` of length 1, at right angles
@@ -107,18 +123,28 @@ fn frame() -> Outcome {
     ];
     for n in normals {
         let f = Frame::new(n);
-        let what = format!("the frame of N = {}", vec(n));
-        close_vec(&format!("{what}: its axis N"), f.n, n, 1e-6)?;
+        let what = say!("the frame of N = {}", "le repère de N = {}", vec(n));
+        let colon = say!(":", "\u{a0}:");
+        close_vec(
+            &say!("{what}: its axis N", "{what}\u{a0}: son axe N"),
+            f.n,
+            n,
+            1e-6,
+        )?;
         for (name, t) in [("T1", f.t1), ("T2", f.t2)] {
             close(
-                &format!("{what}: the length of {name} = {}", vec(t)),
+                &say!(
+                    "{what}: the length of {name} = {}",
+                    "{what}\u{a0}: la longueur de {name} = {}",
+                    vec(t)
+                ),
                 t.length(),
                 1.0,
                 1e-5,
             )?;
-            close(&format!("{what}: {name} . N"), t.dot(n), 0.0, 1e-5)?;
+            close(&format!("{what}{colon} {name} . N"), t.dot(n), 0.0, 1e-5)?;
         }
-        close(&format!("{what}: T1 . T2"), f.t1.dot(f.t2), 0.0, 1e-5)?;
+        close(&format!("{what}{colon} T1 . T2"), f.t1.dot(f.t2), 0.0, 1e-5)?;
     }
     Ok(())
 }
@@ -169,8 +195,10 @@ fn bounce_weight(tracer: &mut Tracer, floor: &Hit) -> Outcome {
     let mean = mean_bounce(tracer, floor, 1, n);
     let right = (mean / ALBEDO - Colour::ONE).abs().max_element() < 0.03;
     ensure(right, || {
-        format!(
-            "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo (0.8, 0.4, 0.2) gave {}, expected (0.8, 0.4, 0.2){}: the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
+        let albedo = vec(ALBEDO);
+        say!(
+            "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo {albedo} gave {}, expected {albedo}{}: the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
+            "dans un four dont la paroi émet une luminance 1, la moyenne de {n} rebonds depuis le sol d'albédo {albedo} donne {}, attendu {albedo}{}\u{a0}: le rebond rapporte albédo * L(w) quand sa direction a pour densité cos(theta) / pi",
             vec(mean),
             weight_hint((mean / ALBEDO).element_sum() / 3.0)
         )
@@ -188,9 +216,10 @@ fn bounce_start(tracer: &mut Tracer, floor: &Hit) -> Outcome {
     let log = tracer.log.take().unwrap_or_default();
     let own = log.iter().filter_map(|r| r.hit).find(|h| h.t < 1e-9);
     ensure(own.is_none(), || {
-        format!(
-            "a bounce from the furnace's floor met the floor itself at t = {:.1e}: start the bounce's ray off the surface with hit.spawn(direction) (session 2), not at the hit point",
-            own.map_or(0.0, |h| h.t)
+        say!(
+            "a bounce from the furnace's floor met the floor itself at t = {}: start the bounce's ray off the surface with hit.spawn(direction) (session 2), not at the hit point",
+            "un rebond depuis le sol du four a rencontré le sol lui-même en t = {}\u{a0}: faites partir le rayon du rebond hors de la surface avec hit.spawn(direction) (séance 2), et non du point d'intersection",
+            decimal(format!("{:.1e}", own.map_or(0.0, |h| h.t)))
         )
     })
 }
@@ -203,29 +232,43 @@ fn bounces_passed_on(tracer: &mut Tracer, floor: &Hit) -> Outcome {
     let ratio = (mean / ALBEDO).element_sum() / 3.0;
     ensure((ratio / 1.75 - 1.0).abs() < 0.03, || {
         let hint = if (ratio - 1.0).abs() < 0.03 {
-            ": the wall was seen with no bounce left; the bounce's ray goes on with the bounces left after this one, bounces - 1"
+            say!(
+                ": the wall was seen with no bounce left; the bounce's ray goes on with the bounces left after this one, bounces - 1",
+                "\u{a0}: la paroi a été vue sans rebond restant\u{a0}; le rayon du rebond continue avec les rebonds qui restent après celui-ci, bounces - 1"
+            )
         } else {
-            ""
+            String::new()
         };
-        format!(
-            "inside the same furnace, with 3 bounces allowed, the mean bounce from the floor gave {}, expected 1.75 albedo = (1.4, 0.7, 0.35): the wall seen with 2 bounces left sends 1 + 0.5 (1 + 0.5){hint}",
-            vec(mean)
+        say!(
+            "inside the same furnace, with 3 bounces allowed, the mean bounce from the floor gave {}, expected 1.75 albedo = {}: the wall seen with 2 bounces left sends 1 + 0.5 (1 + 0.5){hint}",
+            "dans le même four, avec 3 rebonds permis, le rebond moyen depuis le sol donne {}, attendu 1,75 albédo = {}\u{a0}: la paroi vue avec 2 rebonds restants renvoie 1 + 0,5 (1 + 0,5){hint}",
+            vec(mean),
+            vec(1.75 * ALBEDO)
         )
     })
 }
 
 /// What a bounce that brings back `ratio` times the right light most likely got
 /// wrong in its weight.
-fn weight_hint(ratio: Real) -> &'static str {
+fn weight_hint(ratio: Real) -> String {
     let near = |target: Real| (ratio / target - 1.0).abs() < 0.03;
     if near(2.0 / 3.0) {
-        "; 2/3 of it is the mean cosine: the cosine is counted although the direction's density already holds it"
+        say!(
+            "; 2/3 of it is the mean cosine: the cosine is counted although the direction's density already holds it",
+            "\u{a0}; 2/3 de la valeur attendue, c'est le cosinus moyen\u{a0}: le cosinus est compté alors que la densité de la direction le contient déjà"
+        )
     } else if near(1.0 / PI) {
-        "; 1/pi of it: the BRDF's 1/pi is counted although the density's pi cancels it"
+        say!(
+            "; 1/pi of it: the BRDF's 1/pi is counted although the density's pi cancels it",
+            "\u{a0}; 1/pi de la valeur attendue\u{a0}: le 1/pi de la BRDF est compté alors que le pi de la densité l'annule"
+        )
     } else if near(2.0) {
-        "; twice it: the weight divides by the density of a uniform direction, 1 / (2 pi), not of a cosine-weighted one"
+        say!(
+            "; twice it: the weight divides by the density of a uniform direction, 1 / (2 pi), not of a cosine-weighted one",
+            "\u{a0}; le double de la valeur attendue\u{a0}: le poids divise par la densité d'une direction uniforme, 1 / (2 pi), et non par celle d'une direction pondérée par le cosinus"
+        )
     } else {
-        ""
+        String::new()
     }
 }
 
@@ -244,13 +287,17 @@ fn gaussian() -> Outcome {
         };
         [x, y, x * x, y * y, x * y, inside]
     });
-    close("the mean of x", x, 0.0, 0.01)?;
-    close("the mean of y", y, 0.0, 0.01)?;
-    close("the mean of x^2, sigma = 0.5", x2, 0.25, 0.01)?;
-    close("the mean of y^2, sigma = 0.5", y2, 0.25, 0.01)?;
-    close("the mean of x y", xy, 0.0, 0.01)?;
+    let sigma_is = format!(", sigma = {}", num(sigma));
+    close(&mean_of("x"), x, 0.0, 0.01)?;
+    close(&mean_of("y"), y, 0.0, 0.01)?;
+    close(&(mean_of("x^2") + &sigma_is), x2, 0.25, 0.01)?;
+    close(&(mean_of("y^2") + &sigma_is), y2, 0.25, 0.01)?;
+    close(&mean_of("x y"), xy, 0.0, 0.01)?;
     close(
-        "the share of offsets within sigma of the centre",
+        &say!(
+            "the share of offsets within sigma of the centre",
+            "la part des décalages à moins de sigma du centre"
+        ),
         within,
         0.3935,
         0.01,
@@ -258,8 +305,11 @@ fn gaussian() -> Outcome {
     for u1 in [0.0, 1.0 - Real::EPSILON] {
         let (x, y) = sample_gaussian(u1, 0.3, sigma);
         ensure(x.is_finite() && y.is_finite(), || {
-            format!(
-                "u1 = {u1}: gave ({x}, {y}), expected finite numbers (the logarithm of 1 - u1, never of 0)"
+            let [u1, x, y] = [u1, x, y].map(|v| decimal(v.to_string()));
+            let s = separator();
+            say!(
+                "u1 = {u1}: gave ({x}, {y}), expected finite numbers (the logarithm of 1 - u1, never of 0)",
+                "u1 = {u1}\u{a0}: donne ({x}{s}{y}), attendu des nombres finis (le logarithme de 1 - u1, jamais de 0)"
             )
         })?;
     }

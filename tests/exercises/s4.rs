@@ -7,6 +7,9 @@ use raycourse::maths::{PI, Real, Vec3, pixel_rng};
 
 use crate::checklist::Exercise;
 use crate::known::{Outcome, close, close_vec, ensure, grid_mean, num, vec};
+use crate::s3::mean_of;
+use crate::say;
+use crate::words::separator;
 
 /// Session 4's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -75,21 +78,24 @@ fn cone_sample() -> Outcome {
         [w.z, w.x, w.y]
     });
     if let Some((u1, u2, w)) = wrong {
-        return Err(format!(
-            "the cone of half-angle 30 degrees around +z, (u1, u2) = ({}, {}): gave {}, expected a unit vector with z >= cos(30) = 0.866",
-            num(u1),
-            num(u2),
+        let (u1, u2, s) = (num(u1), num(u2), separator());
+        return Err(say!(
+            "the cone of half-angle 30 degrees around +z, (u1, u2) = ({u1}, {u2}): gave {}, expected a unit vector with z >= cos(30) = 0.866",
+            "le cône de demi-angle 30 degrés autour de +z, (u1{s}u2) = ({u1}{s}{u2})\u{a0}: donne {}, attendu un vecteur unitaire avec z >= cos(30) = 0,866",
             vec(w)
         ));
     }
     close(
-        "the cone of half-angle 30 degrees: the mean of cos(theta)",
+        &say!(
+            "the cone of half-angle 30 degrees: the mean of cos(theta)",
+            "le cône de demi-angle 30 degrés\u{a0}: la moyenne de cos(theta)"
+        ),
         z,
         0.9330,
         0.002,
     )?;
-    close("the mean of x", x, 0.0, 0.005)?;
-    close("the mean of y", y, 0.0, 0.005)
+    close(&mean_of("x"), x, 0.0, 0.005)?;
+    close(&mean_of("y"), y, 0.0, 0.005)
 }
 
 /// One over the cone's solid angle `2 pi (1 - cos(theta_max))` inside it:
@@ -97,20 +103,17 @@ fn cone_sample() -> Outcome {
 fn cone_pdf() -> Outcome {
     let cone = Cone::from_sin2(0.25);
     let inside = 1.0 / (2.0 * PI * (1.0 - (0.75 as Real).sqrt()));
+    let at = |cos: Real| {
+        let cos = num(cos);
+        say!(
+            "the density of the 30-degree cone at cos(theta) = {cos}",
+            "la densité du cône de 30 degrés en cos(theta) = {cos}"
+        )
+    };
+    close(&at(0.95), cone.pdf(0.95), inside, 1e-3)?;
+    close(&at(1.0), cone.pdf(1.0), inside, 1e-3)?;
     close(
-        "the density of the 30-degree cone at cos(theta) = 0.95",
-        cone.pdf(0.95),
-        inside,
-        1e-3,
-    )?;
-    close(
-        "the density of the 30-degree cone at cos(theta) = 1",
-        cone.pdf(1.0),
-        inside,
-        1e-3,
-    )?;
-    close(
-        "the density of the 30-degree cone at cos(theta) = 0.5, outside it",
+        &(at(0.5) + &say!(", outside it", ", hors du cône")),
         cone.pdf(0.5),
         0.0,
         1e-9,
@@ -130,18 +133,29 @@ fn disk() -> Outcome {
         [x, y, r2, if r2 <= 0.25 { 1.0 } else { 0.0 }]
     });
     if let Some((x, y)) = outside {
-        return Err(format!(
-            "gave the point ({}, {}), outside the unit disk",
-            num(x),
-            num(y)
+        let (x, y, s) = (num(x), num(y), separator());
+        return Err(say!(
+            "gave the point ({x}, {y}), outside the unit disk",
+            "donne le point ({x}{s}{y}), hors du disque unité"
         ));
     }
-    close("the mean of x", x, 0.0, 0.01)?;
-    close("the mean of y", y, 0.0, 0.01)?;
-    close("the mean of r^2", r2, 0.5, 0.01).map_err(|e| {
-        format!("{e}; with r = xi the points crowd the centre (1/3): uniform over the area needs r = sqrt(xi)")
+    close(&mean_of("x"), x, 0.0, 0.01)?;
+    close(&mean_of("y"), y, 0.0, 0.01)?;
+    close(&mean_of("r^2"), r2, 0.5, 0.01).map_err(|e| {
+        say!(
+            "{e}; with r = xi the points crowd the centre (1/3): uniform over the area needs r = sqrt(xi)",
+            "{e}\u{a0}; avec r = xi, les points se massent au centre (1/3)\u{a0}: une répartition uniforme sur l'aire demande r = sqrt(xi)"
+        )
     })?;
-    close("the share of points within r = 1/2", near, 0.25, 0.01)
+    close(
+        &say!(
+            "the share of points within r = 1/2",
+            "la part des points à une distance r <= 1/2 du centre"
+        ),
+        near,
+        0.25,
+        0.01,
+    )
 }
 
 /// A lens of radius 0.5 focused 10 in front of the eye: the pinhole ray along
@@ -162,16 +176,18 @@ fn thin_lens() -> Outcome {
         ensure(
             origin.z.abs() < 1e-6 && origin.truncate().length() <= 0.5 + 1e-6,
             || {
-                format!(
+                say!(
                     "a ray through the lens of radius 0.5 starts at {}: expected a point of the lens (z = 0, within 0.5 of the eye)",
+                    "un rayon à travers la lentille de rayon 0,5 part de {}\u{a0}: attendu un point de la lentille (z = 0, à moins de 0,5 de l'œil)",
                     vec(origin)
                 )
             },
         )?;
         let s = (focus.z - origin.z) / direction.z;
         close_vec(
-            &format!(
+            &say!(
                 "the ray from {} along {}, where it crosses the focus plane z = -10",
+                "le rayon issu de {} selon {}, là où il traverse le plan de mise au point z = -10",
                 vec(origin),
                 vec(direction)
             ),
@@ -182,7 +198,10 @@ fn thin_lens() -> Outcome {
         spread += origin.truncate().length_squared();
     }
     close(
-        "the mean of x^2 + y^2 over the starts on the lens",
+        &say!(
+            "the mean of x^2 + y^2 over the starts on the lens",
+            "la moyenne de x^2 + y^2 sur les points de départ de la lentille"
+        ),
         spread / draws as Real,
         0.125,
         0.01,

@@ -5,6 +5,8 @@ use raycourse::maths::{Real, Vec3};
 
 use crate::checklist::Exercise;
 use crate::known::{Outcome, ensure, maybe, num, same_distance, vec};
+use crate::say;
+use crate::words::separator;
 
 /// Session 5's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -42,49 +44,67 @@ fn triangle() -> Outcome {
     let down = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
         (
-            "straight down through (0.25, 0.5)",
+            [
+                "straight down through (0.25, 0.5)",
+                "descendant à la verticale par (0,25\u{a0}; 0,5)",
+            ],
             Vec3::new(0.25, 0.5, 1.0),
             down,
             10.0,
             Some((1.0, 0.25, 0.5)),
         ),
         (
-            "straight up from below through (0.2, 0.2)",
+            [
+                "straight up from below through (0.2, 0.2)",
+                "montant à la verticale depuis le dessous par (0,2\u{a0}; 0,2)",
+            ],
             Vec3::new(0.2, 0.2, -2.0),
             -down,
             10.0,
             Some((2.0, 0.2, 0.2)),
         ),
         (
-            "down through (0.6, 0.6), past the long edge",
+            [
+                "down through (0.6, 0.6), past the long edge",
+                "descendant par (0,6\u{a0}; 0,6), au-delà du grand côté",
+            ],
             Vec3::new(0.6, 0.6, 1.0),
             down,
             10.0,
             None,
         ),
         (
-            "down through (0.25, 0.5) with t_max = 0.5",
+            [
+                "down through (0.25, 0.5) with t_max = 0.5",
+                "descendant par (0,25\u{a0}; 0,5) avec t_max = 0,5",
+            ],
             Vec3::new(0.25, 0.5, 1.0),
             down,
             0.5,
             None,
         ),
         (
-            "parallel to the triangle's plane",
+            [
+                "parallel to the triangle's plane",
+                "parallèle au plan du triangle",
+            ],
             Vec3::new(-1.0, 0.2, 0.0),
             Vec3::X,
             10.0,
             None,
         ),
         (
-            "pointing away, up from above",
+            [
+                "pointing away, up from above",
+                "qui s'en éloigne, montant depuis le dessus",
+            ],
             Vec3::new(0.25, 0.5, 1.0),
             -down,
             10.0,
             None,
         ),
     ];
-    for (what, origin, direction, t_max, expected) in cases {
+    for ([what, quoi], origin, direction, t_max, expected) in cases {
         let gave = intersect_triangle(&Ray::new(origin, direction), a, b, c, t_max);
         let right = match (gave, expected) {
             (Some(h), Some((t, beta, gamma))) => {
@@ -96,13 +116,18 @@ fn triangle() -> Outcome {
             _ => false,
         };
         let show = |h: Option<(Real, Real, Real)>| {
-            h.map_or("no hit".into(), |(t, b, g)| {
-                format!("t = {}, b_B = {}, b_C = {}", num(t), num(b), num(g))
+            h.map_or(maybe(None), |(t, b, g)| {
+                let (t, b, g, s) = (num(t), num(b), num(g), separator());
+                format!("t = {t}{s}b_B = {b}{s}b_C = {g}")
             })
         };
         ensure(right, || {
-            format!(
-                "the triangle (0, 0, 0), (1, 0, 0), (0, 1, 0), a ray {what}: gave {}, expected {}",
+            say!(
+                "the triangle {}, {}, {}, a ray {what}: gave {}, expected {}",
+                "le triangle {}, {}, {}, un rayon {quoi}\u{a0}: donne {}, attendu {}",
+                vec(a),
+                vec(b),
+                vec(c),
                 show(gave.map(|h| (h.t, h.beta, h.gamma))),
                 show(expected)
             )
@@ -123,69 +148,96 @@ fn slab() -> Outcome {
     let z = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
         (
-            "from (0, 0, 5) along -z",
+            [
+                "from (0, 0, 5) along -z",
+                "issu de (0\u{a0}; 0\u{a0}; 5) selon -z",
+            ],
             Vec3::new(0.0, 0.0, 5.0),
             z,
             100.0,
             Some(4.0),
         ),
         (
-            "from (-5, 0.5, 0) along +x",
+            [
+                "from (-5, 0.5, 0) along +x",
+                "issu de (-5\u{a0}; 0,5\u{a0}; 0) selon +x",
+            ],
             Vec3::new(-5.0, 0.5, 0.0),
             Vec3::X,
             100.0,
             Some(4.0),
         ),
         (
-            "from (5, 0, 0) along -x",
+            [
+                "from (5, 0, 0) along -x",
+                "issu de (5\u{a0}; 0\u{a0}; 0) selon -x",
+            ],
             Vec3::new(5.0, 0.0, 0.0),
             -Vec3::X,
             100.0,
             Some(4.0),
         ),
         (
-            "from inside, at (0.5, 0, 0), along -z",
+            [
+                "from inside, at (0.5, 0, 0), along -z",
+                "issu de l'intérieur, en (0,5\u{a0}; 0\u{a0}; 0), selon -z",
+            ],
             Vec3::new(0.5, 0.0, 0.0),
             z,
             100.0,
             Some(0.0),
         ),
         (
-            "from (3, 0, 5) along -z, beside the box",
+            [
+                "from (3, 0, 5) along -z, beside the box",
+                "issu de (3\u{a0}; 0\u{a0}; 5) selon -z, à côté de la boîte",
+            ],
             Vec3::new(3.0, 0.0, 5.0),
             z,
             100.0,
             None,
         ),
         (
-            "from (0, 0, 5) along +z, away from the box",
+            [
+                "from (0, 0, 5) along +z, away from the box",
+                "issu de (0\u{a0}; 0\u{a0}; 5) selon +z, qui s'éloigne de la boîte",
+            ],
             Vec3::new(0.0, 0.0, 5.0),
             -z,
             100.0,
             None,
         ),
         (
-            "from (0, 0, 5) along -z with t_max = 3",
+            [
+                "from (0, 0, 5) along -z with t_max = 3",
+                "issu de (0\u{a0}; 0\u{a0}; 5) selon -z avec t_max = 3",
+            ],
             Vec3::new(0.0, 0.0, 5.0),
             z,
             3.0,
             None,
         ),
         (
-            "from (4, 4, 0) along (-1, -1, 0) / sqrt 2",
+            [
+                "from (4, 4, 0) along (-1, -1, 0) / sqrt 2",
+                "issu de (4\u{a0}; 4\u{a0}; 0) selon (-1\u{a0}; -1\u{a0}; 0) / sqrt 2",
+            ],
             Vec3::new(4.0, 4.0, 0.0),
             Vec3::new(-1.0, -1.0, 0.0),
             100.0,
             Some(3.0 * (2.0 as Real).sqrt()),
         ),
     ];
-    for (what, origin, direction, t_max, expected) in cases {
+    for ([what, quoi], origin, direction, t_max, expected) in cases {
         let ray = Ray::new(origin, direction);
         let gave = cube.entry(&ray, ray.direction.recip(), t_max);
         let right = same_distance(gave, expected, 1e-4);
         ensure(right, || {
-            format!(
-                "the box from (-1, -1, -1) to (1, 1, 1), a ray {what} (d = {}): gave {}, expected {}",
+            say!(
+                "the box from {} to {}, a ray {what} (d = {}): gave {}, expected {}",
+                "la boîte de {} à {}, un rayon {quoi} (d = {})\u{a0}: donne {}, attendu {}",
+                vec(cube.min),
+                vec(cube.max),
                 vec(ray.direction),
                 maybe(gave),
                 maybe(expected)

@@ -10,6 +10,7 @@ use raycourse::meshes::{BruteForce, Mesh, ObjData, Placement, Search, read_obj};
 
 use crate::checklist::Exercise;
 use crate::known::{Outcome, close_vec, ensure, maybe, vec};
+use crate::say;
 
 /// Session 6's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -76,45 +77,61 @@ fn build() -> Outcome {
     let mut seen = vec![0u32; n];
     for &t in &bvh.order {
         ensure((t as usize) < n, || {
-            format!("Bvh::order holds the triangle number {t}, but Spot has {n}")
+            say!(
+                "Bvh::order holds the triangle number {t}, but Spot has {n}",
+                "Bvh::order contient le triangle numéro {t}, mais Spot n'en a que {n}"
+            )
         })?;
         seen[t as usize] += 1;
     }
     ensure(bvh.order.len() == n && seen.iter().all(|&s| s == 1), || {
-        format!(
+        say!(
             "Bvh::order must list each of Spot's {n} triangles once: it has {} entries",
+            "Bvh::order doit lister une fois chacun des {n} triangles de Spot\u{a0}: il compte {} entrées",
             bvh.order.len()
         )
     })?;
     ensure(!bvh.nodes.is_empty(), || {
-        "the hierarchy has no node: node 0 is the root".into()
+        say!(
+            "the hierarchy has no node: node 0 is the root",
+            "la hiérarchie n'a aucun nœud\u{a0}: le nœud 0 est la racine"
+        )
     })?;
     let (mut leaves, mut covered) = (0, vec![false; n]);
     let mut pending = vec![(0usize, 1usize)];
     while let Some((index, depth)) = pending.pop() {
         ensure(depth <= 64, || {
-            format!("the hierarchy is deeper than 64 levels at node {index}")
+            say!(
+                "the hierarchy is deeper than 64 levels at node {index}",
+                "la hiérarchie dépasse 64 niveaux de profondeur au nœud {index}"
+            )
         })?;
-        let node: Node = *bvh.nodes.get(index).ok_or(format!(
-            "a node points to node {index}, past the {} nodes",
-            bvh.nodes.len()
-        ))?;
+        let node: Node = *bvh.nodes.get(index).ok_or_else(|| {
+            say!(
+                "a node points to node {index}, past the {} nodes",
+                "un nœud pointe vers le nœud {index}, au-delà des {} nœuds",
+                bvh.nodes.len()
+            )
+        })?;
         if node.count > 0 {
             leaves += 1;
             let range = node.first as usize..(node.first + node.count) as usize;
             for slot in range.clone() {
                 ensure(slot < n && !covered[slot], || {
-                    format!(
+                    say!(
                         "the leaf at node {index} covers Bvh::order[{}..{}], which another leaf covers too or lies past the end",
-                        range.start, range.end
+                        "la feuille du nœud {index} couvre Bvh::order[{}..{}], qu'une autre feuille couvre aussi ou qui dépasse la fin",
+                        range.start,
+                        range.end
                     )
                 })?;
                 covered[slot] = true;
                 let corners = mesh.corners(bvh.order[slot]);
                 let around = corners.iter().fold(Aabb::EMPTY, |b, &p| b.grow(p));
                 ensure(holds(&node.bounds, &around), || {
-                    format!(
+                    say!(
                         "the box of leaf node {index}, {} to {}, does not hold its triangle {}",
+                        "la boîte de la feuille du nœud {index}, de {} à {}, ne contient pas son triangle {}",
                         vec(node.bounds.min),
                         vec(node.bounds.max),
                         bvh.order[slot]
@@ -123,23 +140,33 @@ fn build() -> Outcome {
             }
         } else {
             for child in [node.first as usize, node.first as usize + 1] {
-                let inner = bvh.nodes.get(child).ok_or(format!(
-                    "node {index} points to node {child}, past the {} nodes",
-                    bvh.nodes.len()
-                ))?;
+                let inner = bvh.nodes.get(child).ok_or_else(|| {
+                    say!(
+                        "node {index} points to node {child}, past the {} nodes",
+                        "le nœud {index} pointe vers le nœud {child}, au-delà des {} nœuds",
+                        bvh.nodes.len()
+                    )
+                })?;
                 ensure(holds(&node.bounds, &inner.bounds), || {
-                    format!("the box of node {child} sticks out of its parent's, node {index}")
+                    say!(
+                        "the box of node {child} sticks out of its parent's, node {index}",
+                        "la boîte du nœud {child} dépasse de celle de son parent, le nœud {index}"
+                    )
                 })?;
                 pending.push((child, depth + 1));
             }
         }
     }
     ensure(covered.iter().all(|&c| c), || {
-        "some entries of Bvh::order are in no leaf".into()
+        say!(
+            "some entries of Bvh::order are in no leaf",
+            "des entrées de Bvh::order ne sont dans aucune feuille"
+        )
     })?;
     ensure(leaves >= n / 16, || {
-        format!(
-            "Spot's {n} triangles end in {leaves} leaves: expected the boxes split until about 4 triangles a leaf"
+        say!(
+            "Spot's {n} triangles end in {leaves} leaves: expected the boxes split until about 4 triangles a leaf",
+            "les {n} triangles de Spot aboutissent dans {leaves} feuilles\u{a0}: attendu des boîtes divisées jusqu'à environ 4 triangles par feuille"
         )
     })
 }
@@ -221,8 +248,9 @@ fn walk() -> Outcome {
             _ => false,
         };
         ensure(right, || {
-            format!(
+            say!(
                 "ray {k} at Spot, from {} along {}: the walk gave {}, testing every triangle {}",
+                "rayon {k} vers Spot, issu de {} selon {}\u{a0}: le parcours donne {}, le test de chaque triangle {}",
                 vec(ray.origin),
                 vec(ray.direction),
                 maybe(gave),
@@ -253,29 +281,46 @@ fn smooth_normal() -> Outcome {
     let middle = Vec3::new(0.5, 0.5, 1.0) / (1.5 as Real).sqrt();
     let centre = Vec3::new(0.270_598, 0.270_598, 0.923_880);
     let cases = [
-        ("at A, weights (1, 0, 0)", [1.0, 0.0, 0.0], Vec3::Z, Vec3::Z),
         (
-            "halfway along BC, weights (0, 0.5, 0.5)",
+            [
+                "at A, weights (1, 0, 0)",
+                "en A, poids (1\u{a0}; 0\u{a0}; 0)",
+            ],
+            [1.0, 0.0, 0.0],
+            Vec3::Z,
+            Vec3::Z,
+        ),
+        (
+            [
+                "halfway along BC, weights (0, 0.5, 0.5)",
+                "au milieu de BC, poids (0\u{a0}; 0,5\u{a0}; 0,5)",
+            ],
             [0.0, 0.5, 0.5],
             Vec3::Z,
             middle,
         ),
         (
-            "at the centre, weights (1/3, 1/3, 1/3)",
+            [
+                "at the centre, weights (1/3, 1/3, 1/3)",
+                "au centre, poids (1/3\u{a0}; 1/3\u{a0}; 1/3)",
+            ],
             [third, third, third],
             Vec3::Z,
             centre,
         ),
         (
-            "at the centre, seen from below",
+            ["at the centre, seen from below", "au centre, vu de dessous"],
             [third, third, third],
             -Vec3::Z,
             -centre,
         ),
     ];
-    for (what, weights, geometric, expected) in cases {
+    for ([what, quoi], weights, geometric, expected) in cases {
         close_vec(
-            &format!("the triangle's shading normal {what}"),
+            &say!(
+                "the triangle's shading normal {what}",
+                "la normale d'ombrage du triangle {quoi}"
+            ),
             mesh.smooth_normal(0, weights, geometric),
             expected,
             1e-5,
@@ -289,7 +334,10 @@ fn smooth_normal() -> Outcome {
         &AS_READ,
     );
     close_vec(
-        "a triangle without vertex normals",
+        &say!(
+            "a triangle without vertex normals",
+            "un triangle sans normales aux sommets"
+        ),
         flat.smooth_normal(0, [third; 3], Vec3::Z),
         Vec3::Z,
         1e-9,

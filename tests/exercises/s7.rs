@@ -7,6 +7,8 @@ use raycourse::maths::{Colour, Real, Vec3};
 
 use crate::checklist::Exercise;
 use crate::known::{Outcome, close_vec, ensure, vec};
+use crate::say;
+use crate::words::{decimal, separator};
 
 /// Session 7's exercises, in the book's order.
 pub const EXERCISES: &[Exercise] = &[
@@ -55,50 +57,71 @@ fn lookup() -> Outcome {
             Filter::Nearest,
             [0.25, 0.75],
             RED,
-            "the top-left texel's centre",
+            [
+                "the top-left texel's centre",
+                "le centre du texel en haut à gauche",
+            ],
         ),
         (
             Filter::Nearest,
             [0.75, 0.25],
             Colour::ONE,
-            "the bottom-right texel's centre",
+            [
+                "the bottom-right texel's centre",
+                "le centre du texel en bas à droite",
+            ],
         ),
         (
             Filter::Nearest,
             [0.9, 0.9],
             GREEN,
-            "near the top-right corner",
+            ["near the top-right corner", "près du coin en haut à droite"],
         ),
         (
             Filter::Nearest,
             [1.25, 0.75],
             RED,
-            "one texture to the right of the top-left centre",
+            [
+                "one texture to the right of the top-left centre",
+                "une largeur de texture à droite du centre du texel en haut à gauche",
+            ],
         ),
         (
             Filter::Bilinear,
             [0.25, 0.75],
             RED,
-            "the top-left texel's centre",
+            [
+                "the top-left texel's centre",
+                "le centre du texel en haut à gauche",
+            ],
         ),
         (
             Filter::Bilinear,
             [0.5, 0.5],
             Colour::splat(0.5),
-            "the texture's centre",
+            ["the texture's centre", "le centre de la texture"],
         ),
         (
             Filter::Bilinear,
             [0.5, 0.75],
             Colour::new(0.5, 0.5, 0.0),
-            "between the two top texels",
+            [
+                "between the two top texels",
+                "entre les deux texels du haut",
+            ],
         ),
     ];
-    for (filter, uv, expected, what) in cases {
+    for (filter, uv, expected, [what, quoi]) in cases {
+        let lookup = match filter {
+            Filter::Nearest => "au plus proche",
+            Filter::Bilinear => "bilinéaire",
+        };
+        let [u, v] = uv.map(|x| decimal(x.to_string()));
+        let s = separator();
         close_vec(
-            &format!(
-                "a 2 x 2 texture (red, green / blue, white), {filter:?} lookup at (u, v) = ({}, {}), {what}",
-                uv[0], uv[1]
+            &say!(
+                "a 2 x 2 texture (red, green / blue, white), {filter:?} lookup at (u, v) = ({u}, {v}), {what}",
+                "une texture de 2 x 2 (rouge, vert / bleu, blanc), lecture {lookup} ({filter:?}) en (u{s}v) = ({u}{s}{v}), {quoi}"
             ),
             texture(filter).colour(uv),
             expected,
@@ -136,10 +159,15 @@ fn orientation() -> Outcome {
         ),
     ];
     for (eye, plunge, expected_eye, [right, up, back]) in cases {
-        let what = format!(
-            "the camera at {} looking at the origin, up (0, 1, 0), plunge {plunge} degrees",
-            vec(eye)
-        );
+        let what = {
+            let plunge = decimal(plunge.to_string());
+            say!(
+                "the camera at {} looking at the origin, up {}, plunge {plunge} degrees",
+                "la caméra en {} regardant l'origine, up {}, plongée de {plunge} degrés",
+                vec(eye),
+                vec(Vec3::Y)
+            )
+        };
         let Some((
             gave_eye,
             Orientation::Aimed {
@@ -149,19 +177,45 @@ fn orientation() -> Outcome {
             },
         )) = aim(eye, Vec3::ZERO, Vec3::Y, plunge)
         else {
-            return Err(format!("{what}: gave no aimed orientation"));
+            return Err(say!(
+                "{what}: gave no aimed orientation",
+                "{what}\u{a0}: ne donne aucune orientation visée (Orientation::Aimed)"
+            ));
         };
-        close_vec(&format!("{what}: the eye"), gave_eye, expected_eye, 1e-4)?;
-        close_vec(&format!("{what}: right"), r, right, 1e-5)?;
-        close_vec(&format!("{what}: up"), u, up, 1e-5)?;
-        close_vec(&format!("{what}: back"), b, back, 1e-5)?;
+        close_vec(
+            &say!("{what}: the eye", "{what}\u{a0}: l'œil"),
+            gave_eye,
+            expected_eye,
+            1e-4,
+        )?;
+        close_vec(
+            &say!("{what}: right", "{what}\u{a0}: right (vers la droite)"),
+            r,
+            right,
+            1e-5,
+        )?;
+        close_vec(
+            &say!("{what}: up", "{what}\u{a0}: up (vers le haut)"),
+            u,
+            up,
+            1e-5,
+        )?;
+        close_vec(
+            &say!("{what}: back", "{what}\u{a0}: back (vers l'arrière)"),
+            b,
+            back,
+            1e-5,
+        )?;
     }
     let down = aim(Vec3::new(0.0, 10.0, 0.0), Vec3::ZERO, Vec3::Y, 0.0);
     ensure(down.is_none(), || {
-        format!(
-            "the camera at (0, 10, 0) looking straight down along up: gave {}, expected none (no right-hand direction)",
-            down.map_or("none".into(), |(eye, _)| format!(
+        say!(
+            "the camera at {} looking straight down along up: gave {}, expected none (no right-hand direction)",
+            "la caméra en {} regardant droit vers le bas, le long de up\u{a0}: donne {}, attendu aucune orientation (pas de direction vers la droite)",
+            vec(Vec3::new(0.0, 10.0, 0.0)),
+            down.map_or(say!("none", "aucune orientation"), |(eye, _)| say!(
                 "a camera at {}",
+                "une caméra en {}",
                 vec(eye)
             ))
         )
