@@ -8,7 +8,9 @@
 //!
 //! The Cargo features `s1` to `s7` are the course's sessions. Each enables the one
 //! before it, so `--no-default-features --features s3` is the crate a student has
-//! after the third session. The default is `s7`, the whole course.
+//! after the third session. The default is `s7`, the whole course, with `beyond`:
+//! what goes beyond it (the fast engine, the samplers, the studies), which no
+//! session view or exercise crate holds.
 //!
 //! | feature | session brings |
 //! |---|---|
@@ -38,11 +40,11 @@
 //! | [`scene`] | everything a render needs, and the nearest hit | 1, 2, 3, 5 |
 //! | [`integrator`] | `radiance`: the light arriving along a ray | 1 to 4 |
 //! | [`render`](mod@render) | every pixel, in parallel; the film; PNG files | 1, 3 |
-//! | `samplers` | beyond the course: better-placed samples, adaptive sampling | 3 |
-//! | `fast` | beyond the course: the fast engine, the same bytes in less time | 3, 6 |
-//! | `engines` | beyond the course: which engine renders a scene | 3 |
+//! | `samplers` | beyond the course: better-placed samples, adaptive sampling | `beyond` |
+//! | `fast` | beyond the course: the fast engine, the same bytes in less time | `beyond` |
+//! | `engines` | beyond the course: which engine renders a scene | `beyond` |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
-//! | `studies` | error against samples and time, scale sweeps, ray sets | 3, 6 |
+//! | `studies` | beyond the course: error against samples and time, scale sweeps, ray sets | `beyond` |
 //! | [`check`] | an image against the stage's: the comparison (1), a student's image graded with the likely mistake (7) | 1, 7 |
 //! | [`inspect`] | one pixel's path ray by ray; images of normals, depth, objects and cost | 1 |
 //!
@@ -87,29 +89,29 @@ pub mod integrator;
 
 pub mod render;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 pub mod samplers;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 pub mod fast;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 pub mod engines;
 
 pub mod scene_file;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 pub mod studies;
 
 pub mod check;
 
 pub mod inspect;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 pub use engines::{render, render_reporting};
 pub use files::{Disk, Files, InMemory};
 pub use render::{Film, Render, encode_png};
-#[cfg(not(feature = "s3"))]
+#[cfg(not(feature = "beyond"))]
 pub use render::{render, render_reporting};
 pub use scene::Scene;
 pub use scene_file::{

@@ -1,5 +1,6 @@
 //! The `raycourse` command: list the course's stages, render one, render any scene
-//! file, and the studies of later sessions. Each command is a file of
+//! file, check an image, follow a pixel's path; beyond the course, the studies of
+//! speed and accuracy. Each command is a file of
 //! `src/commands/`; this file builds the command line and dispatches.
 
 #![deny(unsafe_code)]

@@ -11,13 +11,12 @@
 //! | [`regions`] | which object each pixel shows, to say where the differences are |
 //! | [`mistakes`] | the classic mistakes, each as the image it would make |
 //! | [`report`] | the verdict, the figures behind it and the hint |
-//! | [`language`] | English or French, as the locale or `--lang` asks |
+//! | [`language`] | English or French, as the locale or `--lang` asks (the checklist's too) |
 //! | [`wording`] | the report in words, as `check` prints it |
 
 pub mod compare;
 #[cfg(feature = "s7")]
 pub mod expected;
-#[cfg(feature = "s7")]
 pub mod language;
 #[cfg(feature = "s7")]
 pub mod mistakes;

@@ -1,11 +1,10 @@
 //! `raycourse bench`: the stages at the course's settings, timed with the course's
-//! code and (from session 3) with the fast engine, beside the times the course
-//! reported on its own machine.
+//! code beside the times the course reported on its own machine; beyond the course,
+//! with the fast engine too.
 
 use std::num::NonZeroUsize;
 
 use clap::{ArgMatches, FromArgMatches, Parser};
-use raycourse::scene_file::SESSION;
 use raycourse::{Overrides, Scene, Stage, stages};
 
 use crate::commands::Verb;
@@ -13,10 +12,10 @@ use crate::commands::failure::Failure;
 use crate::commands::options::RenderArgs;
 use crate::commands::output::{Timed, timed_render};
 
-/// Render the stages at the course's settings and print a table of their times,
-/// by the course's code and (from session 3) by the fast engine, which must give
-/// the same image, beside the course's own times (every stage of this build, or
-/// those of the sessions given).
+/// Render the stages at the course's settings and print a table of their times by
+/// the course's code, beside the course's own times (every stage of this build, or
+/// those of the sessions given); beyond the course, by the fast engine too, which
+/// must give the same image.
 #[derive(Parser)]
 #[command(name = "bench")]
 struct BenchArgs {
@@ -57,53 +56,31 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         quiet: true,
         ..RenderArgs::default()
     };
-    println!(
-        "| stage | settings | course's code | `--fast` | speed-up | rays | Mrays/s | course |"
+    let header = "| stage | settings | course's code | rays | Mrays/s | course |";
+    let rule = "|---|---|---|---|---|---|";
+    #[cfg(feature = "beyond")]
+    let (header, rule) = (
+        format!("{header} `--fast` | speed-up |"),
+        format!("{rule}---|---|"),
     );
-    println!("|---|---|---|---|---|---|---|---|");
+    println!("{header}\n{rule}");
     let chosen = |session: u32| args.sessions.is_empty() || args.sessions.contains(&session);
     for stage in stages().filter(|s| chosen(s.session)) {
         let scene = stage.scene(&Overrides::default())?;
         let course = timed_render(stage.name, &scene, &options)?;
-        let fast = fast_render(stage, &options)?;
-        if let Some(fast) = &fast
-            && fast.result.film != course.result.film
-        {
-            return Err(Failure::Machine(format!(
-                "{}: the fast engine's image differs from the course's code's",
-                stage.name
-            )));
-        }
-        println!("{}", row(stage, &scene, &course, fast.as_ref()));
+        let row = row(stage, &scene, &course);
+        #[cfg(feature = "beyond")]
+        let row = row + &crate::commands::beyond::fast_columns(stage, &course, &options)?;
+        println!("{row}");
     }
     Ok(())
 }
 
-/// `stage` rendered by the fast engine, from session 3 (`None` before).
-fn fast_render(stage: &Stage, options: &RenderArgs) -> Result<Option<Timed>, Failure> {
-    if SESSION < 3 {
-        return Ok(None);
-    }
-    let fast = Overrides {
-        fast: true,
-        ..Overrides::default()
-    };
-    let scene = stage.scene(&fast)?;
-    timed_render(stage.name, &scene, options).map(Some)
-}
-
-/// The table's row of `stage`: its settings, its times by the course's code and the
-/// fast engine, its rays, and the course's time.
-fn row(stage: &Stage, scene: &Scene, course: &Timed, fast: Option<&Timed>) -> String {
-    let (time, speed_up) = match fast {
-        Some(f) => (
-            format!("{:.2} s", f.seconds),
-            format!("{:.2}x", course.seconds / f.seconds),
-        ),
-        None => ("-".into(), "-".into()),
-    };
+/// The table's row of `stage`: its settings, its time by the course's code, its
+/// rays, and the course's time.
+fn row(stage: &Stage, scene: &Scene, course: &Timed) -> String {
     format!(
-        "| `{}` ({}) | {} | {:.2} s | {time} | {speed_up} | {} | {:.2} | {} |",
+        "| `{}` ({}) | {} | {:.2} s | {} | {:.2} | {} |",
         stage.name,
         stage.figure.map_or("-".into(), |f| f.to_string()),
         scene.summary(),

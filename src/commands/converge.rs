@@ -9,9 +9,9 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 use indicatif::ProgressBar;
 use raycourse::maths::Real;
 use raycourse::render::Film;
+use raycourse::render::cache::{load_reference, reference_path, save_reference};
 use raycourse::render_reporting;
 use raycourse::studies::convergence::{Rung, climb, fitted_slope, sample_ladder};
-use raycourse::studies::reference::{load_reference, reference_path, save_reference};
 use raycourse::studies::variant::{Edit, Variant, comparison, comparison_names};
 use raycourse::{Overrides, Scene, parse_scene, stages};
 

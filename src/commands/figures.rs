@@ -1,10 +1,11 @@
 //! `raycourse figures [dir]`: every stage of the build at the course's settings, by
-//! the course's code; with `--fast` by the fast engine too, to the same bytes.
+//! the course's code; beyond the course, with `--fast` by the fast engine too, to
+//! the same bytes.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use clap::{ArgMatches, FromArgMatches, Parser};
-use raycourse::{Stage, stages};
+use raycourse::stages;
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
@@ -20,8 +21,9 @@ struct FiguresArgs {
     #[arg(default_value = "book/src/figures")]
     dir: PathBuf,
     /// Render each stage with the fast engine too, check that it gives the same
-    /// bytes, and print both closing lines (session 3).
-    #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
+    /// bytes, and print both closing lines.
+    #[cfg(feature = "beyond")]
+    #[arg(long)]
     fast: bool,
     /// Hide the progress bars.
     #[arg(long, short)]
@@ -48,38 +50,10 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
             ..RenderArgs::default()
         };
         render_stage(stage, &options)?;
+        #[cfg(feature = "beyond")]
         if args.fast {
-            same_bytes_by_the_fast_engine(stage, options, &out)?;
+            crate::commands::beyond::same_bytes_by_the_fast_engine(stage, options, &out)?;
         }
         Ok(())
     })
-}
-
-/// Renders `stage` with `options` by the fast engine, beside `course` (the course's
-/// render), and fails unless the two files have the same bytes.
-fn same_bytes_by_the_fast_engine(
-    stage: &Stage,
-    options: RenderArgs,
-    course: &Path,
-) -> Result<(), Failure> {
-    let fast = course.with_extension("fast.png");
-    let options = RenderArgs {
-        out: Some(fast.clone()),
-        fast: true,
-        ..options
-    };
-    render_stage(stage, &options)?;
-    let read = |path: &Path| {
-        std::fs::read(path)
-            .map_err(|e| Failure::Machine(format!("{}: cannot read the file: {e}", path.display())))
-    };
-    let same = read(course)? == read(&fast)?;
-    std::fs::remove_file(&fast).map_err(|e| Failure::write(&fast, e))?;
-    match same {
-        true => Ok(()),
-        false => Err(Failure::Machine(format!(
-            "{}: the fast engine's image differs from the course's code's",
-            stage.name
-        ))),
-    }
 }

@@ -13,12 +13,13 @@ pub mod probe;
 pub mod render;
 pub mod stage;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
+pub mod beyond;
+#[cfg(feature = "beyond")]
 pub mod converge;
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 pub mod plot;
-
-#[cfg(feature = "s6")]
+#[cfg(feature = "beyond")]
 pub mod rays;
 
 #[cfg(feature = "s7")]

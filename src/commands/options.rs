@@ -6,7 +6,6 @@ use std::path::PathBuf;
 use clap::Args;
 use raycourse::Overrides;
 use raycourse::inspect::aov::Aov;
-use raycourse::maths::Real;
 
 use crate::commands::failure::Failure;
 
@@ -56,20 +55,10 @@ pub struct RenderArgs {
     /// Output PNG (default: out/<name>.png).
     #[arg(long)]
     pub out: Option<PathBuf>,
-    /// Adaptive sampling: each pixel takes samples until the estimated relative
-    /// standard error of its mean is below this (such as 0.02), up to 4 times `--spp`
-    /// (session 3).
-    #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
-    pub noise: Option<Real>,
-    /// Also write a grey PNG of the samples each pixel took, black for the fewest
-    /// and white for the most (session 3).
-    #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
-    pub noise_map: Option<PathBuf>,
-    /// Render with the fast engine, beyond the course: the same image as the
-    /// course's functions give, in less time; an edit of a course function does not
-    /// show in it (session 3).
-    #[arg(long, hide = raycourse::scene_file::SESSION < 3)]
-    pub fast: bool,
+    /// Settings beyond the course: adaptive sampling, the fast engine.
+    #[cfg(feature = "beyond")]
+    #[command(flatten)]
+    pub beyond: crate::commands::beyond::BeyondArgs,
     /// Instead of the render, an image of what the renderer sees through each
     /// pixel's centre: the normal, the depth, the albedo, the object, or the cost
     /// (spheres, boxes and triangles tested), into `out/<name>-<kind>.png`.
@@ -90,11 +79,10 @@ fn aov_parser() -> impl clap::builder::TypedValueParser<Value = Aov> {
 impl RenderArgs {
     /// The scene-file settings these options replace.
     pub fn overrides(&self) -> Overrides {
-        Overrides {
-            noise: self.noise,
-            fast: self.fast,
-            ..self.scene.overrides()
-        }
+        let overrides = self.scene.overrides();
+        #[cfg(feature = "beyond")]
+        let overrides = self.beyond.applied(overrides);
+        overrides
     }
 }
 

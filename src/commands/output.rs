@@ -122,16 +122,8 @@ pub fn render_to_file(
         true => format!(", {average:.1} spp on average"),
         false => String::new(),
     };
-    if let Some(map) = &options.noise_map {
-        write(map, &sample_map(taken, scene))?;
-        let (fewest, most) = (taken.iter().min(), taken.iter().max());
-        println!(
-            "{label}: samples per pixel from {} (black) to {} (white) -> {}",
-            fewest.unwrap_or(&0),
-            most.unwrap_or(&0),
-            map.display()
-        );
-    }
+    #[cfg(feature = "beyond")]
+    options.beyond.write_noise_map(label, scene, taken)?;
     println!(
         "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{adaptive}{dropped} -> {}",
         scene.summary(),
@@ -173,17 +165,4 @@ fn aov_to_file(
         out.display()
     );
     Ok(())
-}
-
-/// The samples each pixel `taken`, as a grey PNG the size of `scene`'s image: black
-/// for the fewest, white for the most.
-fn sample_map(taken: &[u32], scene: &Scene) -> Vec<u8> {
-    let fewest = taken.iter().copied().min().unwrap_or(0);
-    let most = taken.iter().copied().max().unwrap_or(0);
-    let span = f64::from((most - fewest).max(1));
-    let grey: Vec<u8> = taken
-        .iter()
-        .flat_map(|&n| [(255.0 * f64::from(n - fewest) / span).round() as u8; 3])
-        .collect();
-    encode_rgb8(&grey, scene.camera.width, scene.camera.height)
 }

@@ -63,7 +63,6 @@ impl Direct {
                 let towards = Towards::Point(distance);
                 (Direct::Shadowed { ray, lit, towards }, None)
             }
-            #[cfg(feature = "s4")]
             Some(Light::Sphere(light)) => {
                 let sample = match settings.light_sampling {
                     true => tracer.light_sample(&light, hit, albedo),

@@ -266,7 +266,6 @@ mod tests {
     }
 
     /// The light samples of a sphere light, from session 4.
-    #[cfg(feature = "s4")]
     mod light_samples {
         use super::*;
         use crate::integrator::Tracer;

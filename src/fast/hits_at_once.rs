@@ -6,7 +6,6 @@
 
 use crate::fast::direct_at_once::{Direct, Towards};
 use crate::fast::four_lanes::{FourLanes, repeated};
-#[cfg(feature = "s4")]
 use crate::fast::light_samples_at_once;
 use crate::fast::path::{PATHS, Path, Shaded};
 use crate::fast::shading::{self, vector};
@@ -67,7 +66,6 @@ pub(crate) fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PA
         Some(Light::Point(light)) if scene.settings.shadows => {
             point_light_all(lanes, paths, hits, &light);
         }
-        #[cfg(feature = "s4")]
         Some(Light::Sphere(light)) if scene.settings.light_sampling => {
             light_samples_at_once::sphere_light_all(lanes, paths, hits, &light);
         }

@@ -36,24 +36,15 @@ pub mod portable;
 pub mod shading;
 pub mod sphere_lanes;
 
-#[cfg(all(target_arch = "x86_64", feature = "s6"))]
+#[cfg(target_arch = "x86_64")]
 pub mod avx_lanes;
-#[cfg(feature = "s6")]
 pub mod fast_bvh;
-#[cfg(feature = "s6")]
 pub mod float_lanes;
-#[cfg(feature = "s4")]
 pub mod light_samples_at_once;
-#[cfg(feature = "s5")]
 pub mod meshes_at_once;
-#[cfg(feature = "s6")]
 pub mod sah;
-#[cfg(feature = "s6")]
 pub mod traversal_stack;
-#[cfg(feature = "s6")]
 pub mod triangle_group;
-#[cfg(feature = "s6")]
 pub mod wide_node;
 
-#[cfg(feature = "s6")]
 pub use fast_bvh::FastBvh;

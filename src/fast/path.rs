@@ -4,7 +4,6 @@
 //! [`radiance`](crate::integrator::Tracer::radiance) does when it returns.
 
 use crate::fast::direct_at_once::Direct;
-#[cfg(feature = "s5")]
 use crate::fast::meshes_at_once;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
@@ -128,12 +127,10 @@ impl<'s> Path<'s> {
     }
 
     /// Counts the ray, whose nearest sphere is `nearest` and whose hit on it is
-    /// `hit`: from session 5 a mesh's hit replaces it if closer. `None` where the
-    /// ray meets nothing, which ends the path.
-    #[cfg_attr(not(feature = "s5"), allow(unused_variables))]
+    /// `hit`: a mesh's hit replaces it if closer. `None` where the ray meets
+    /// nothing, which ends the path.
     pub(crate) fn hit(&mut self, nearest: Option<(Real, usize)>, hit: &mut Shaded) {
         self.tracer.rays += 1;
-        #[cfg(feature = "s5")]
         if let Some(on_mesh) = meshes_at_once::nearer_mesh(self.tracer.scene, &self.ray, nearest) {
             *hit = Some(on_mesh);
         }
@@ -174,7 +171,6 @@ impl<'s> Path<'s> {
     pub(crate) fn light(&mut self, shadow: Option<(Real, usize)>) {
         if let (Some(direct), Some(level)) = (self.direct.take(), self.levels.last_mut()) {
             level.direct = direct.resolve(shadow);
-            #[cfg(feature = "s5")]
             if meshes_at_once::in_the_way(self.tracer.scene, &direct, shadow) {
                 level.direct = Colour::ZERO;
             }

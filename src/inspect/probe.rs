@@ -39,6 +39,7 @@ pub enum ProbeError {
         samples: u32,
     },
     /// The scene renders with code beyond the course, which the probe does not follow.
+    #[cfg(feature = "beyond")]
     #[error("the probe follows the course's code; this scene asks for {0}")]
     Beyond(String),
 }
@@ -69,8 +70,8 @@ pub fn probe(scene: &Scene, x: u32, y: u32, sample: u32) -> Result<Probe, ProbeE
     })
 }
 
-/// Refuses a pixel outside the image, a sample past the last, and a scene that
-/// renders with code beyond the course.
+/// Refuses a pixel outside the image and a sample past the last; beyond the course,
+/// a scene that renders with code the probe does not follow.
 fn check(scene: &Scene, x: u32, y: u32, sample: u32) -> Result<(), ProbeError> {
     let (width, height) = (scene.camera.width, scene.camera.height);
     if x >= width || y >= height {
@@ -85,7 +86,7 @@ fn check(scene: &Scene, x: u32, y: u32, sample: u32) -> Result<(), ProbeError> {
     if sample >= samples {
         return Err(ProbeError::NoSuchSample { sample, samples });
     }
-    #[cfg(feature = "s3")]
+    #[cfg(feature = "beyond")]
     if let Some(what) = scene.settings.beyond.beyond_the_course() {
         return Err(ProbeError::Beyond(what));
     }

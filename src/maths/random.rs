@@ -15,7 +15,8 @@ pub enum PixelRng {
     Independent(rand_pcg::Pcg64Mcg),
     /// Numbers that a sampler beyond the course spreads evenly over the pixel's
     /// samples (`src/samplers/`).
-    Spread(Box<dyn SpreadNumbers>),
+    #[cfg(feature = "beyond")]
+    Spread(Box<dyn crate::maths::spread::SpreadNumbers>),
 }
 
 /// The independent random numbers of pixel number `pixel` (row-major from the
@@ -39,6 +40,7 @@ pub fn pixel_hash(seed: u64, pixel: u64) -> u64 {
 pub fn uniform(rng: &mut PixelRng) -> Real {
     match rng {
         PixelRng::Independent(stream) => stream.random::<Real>(),
+        #[cfg(feature = "beyond")]
         PixelRng::Spread(numbers) => numbers.number(),
     }
 }
@@ -50,33 +52,11 @@ pub fn uniform(rng: &mut PixelRng) -> Real {
 pub fn uniform_pair(rng: &mut PixelRng) -> (Real, Real) {
     match rng {
         PixelRng::Independent(stream) => (stream.random::<Real>(), stream.random::<Real>()),
+        #[cfg(feature = "beyond")]
         PixelRng::Spread(numbers) => numbers.pair(),
     }
 }
 // ANCHOR_END: uniform
-
-/// A sampler beyond the course: numbers for each decision of a path, spread evenly
-/// over the samples of a pixel. Every sample starts with
-/// [`start_sample`](SpreadNumbers::start_sample); each random decision of its path
-/// (where in the pixel, where on the lens, which light direction, which bounce
-/// direction, whether the path goes on) then takes the next dimension, one number or
-/// a pair.
-pub trait SpreadNumbers: std::fmt::Debug + Send {
-    /// Starts sample number `sample` of the pixel at its first dimension.
-    fn start_sample(&mut self, sample: u32);
-    /// A number of `[0, 1)` for a one-dimensional decision.
-    fn number(&mut self) -> Real;
-    /// A point of `[0, 1)^2` for a two-dimensional decision.
-    fn pair(&mut self) -> (Real, Real);
-    /// A copy that draws the same numbers from here on.
-    fn copy(&self) -> Box<dyn SpreadNumbers>;
-}
-
-impl Clone for Box<dyn SpreadNumbers> {
-    fn clone(&self) -> Self {
-        self.copy()
-    }
-}
 
 // ANCHOR: splitmix64
 /// SplitMix64's finaliser: a bijection of `u64` that scatters nearby inputs.

@@ -8,7 +8,9 @@
 //! | [`samples`] | 3 | one pixel: the mean of many random samples |
 //! | [`film`] | 1 | linear radiance per pixel, and its 8-bit display values |
 //! | [`png`] | 1 | PNG files with fixed settings, written atomically |
+//! | [`cache`] | 1 | films rendered once and kept on disk, such as `check`'s references |
 
+pub mod cache;
 pub mod film;
 pub mod png;
 pub mod rows;

@@ -2,7 +2,8 @@
 //! the samples of a pixel, rather than drawn independently.
 
 use crate::maths::Real;
-use crate::maths::random::{SpreadNumbers, pixel_hash};
+use crate::maths::random::pixel_hash;
+use crate::maths::spread::SpreadNumbers;
 use crate::samplers::sobol::{mix_bits, owen_scramble, permute, sobol_pair};
 use crate::scene::beyond::Sampler;
 

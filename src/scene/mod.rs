@@ -7,7 +7,7 @@
 //! | [`settings`] | 1 | how a scene is rendered: samples, bounces, gamma, ... |
 //! | [`occlusion`] | 2 | whether anything lies on a shadow ray |
 //! | `sphere_hits` | 1 to 4 | the nearest hit: among the spheres |
-//! | [`beyond`] | 3 | settings beyond the course: samplers, adaptive sampling, the fast engine |
+//! | [`beyond`] | `beyond` | settings beyond the course: samplers, adaptive sampling, the fast engine |
 //! | [`mesh_hits`] | 5 | the nearest hit: among the spheres, then the meshes |
 
 pub mod objects;
@@ -16,7 +16,7 @@ pub mod settings;
 #[cfg(feature = "s2")]
 pub mod occlusion;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 pub mod beyond;
 
 #[cfg(not(feature = "s5"))]

@@ -4,7 +4,7 @@ use smart_default::SmartDefault;
 
 use crate::maths::Real;
 
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 use crate::scene::beyond::Beyond;
 
 // ANCHOR: settings
@@ -41,9 +41,9 @@ pub struct Settings {
     /// Past the bounce limit, the probability that a path goes on (Russian roulette,
     /// session 4); `None`: paths stop at the limit.
     pub russian_roulette: Option<Real>,
-    /// What a render uses beyond the course (session 3 on): another sampler,
-    /// adaptive sampling, the fast engine.
-    #[cfg(feature = "s3")]
+    /// What a render uses beyond the course: another sampler, adaptive sampling,
+    /// the fast engine.
+    #[cfg(feature = "beyond")]
     pub beyond: Beyond,
 }
 // ANCHOR_END: settings

@@ -3,11 +3,10 @@
 use std::path::Path;
 
 use crate::scene_file::SceneError;
-use crate::scene_file::format::{AccelerationSpec, MAX_PIXELS, SceneFile};
+use crate::scene_file::format::{MAX_PIXELS, SceneFile};
 
 /// Checks that the values of `file` make sense together: the image is not too
-/// large, a leaf size goes with the fast engine's hierarchy, an aim has a point to look at,
-/// shadow rays go with a point light and light sampling with a sphere light.
+/// large, an aim has a point to look at, shadow rays go with a point light and light sampling with a sphere light.
 pub fn check_consistency(file: &SceneFile, path: &Path) -> Result<(), SceneError> {
     let inconsistent = |key: &str, message: String| {
         Err(SceneError::Inconsistent {
@@ -24,14 +23,6 @@ pub fn check_consistency(file: &SceneFile, path: &Path) -> Result<(), SceneError
         return inconsistent(
             "render.width",
             format!("{size}; at most {MAX_PIXELS} are allowed"),
-        );
-    }
-    if r.leaf_size.is_some() && !(r.fast && r.acceleration == AccelerationSpec::Bvh) {
-        return inconsistent(
-            "render.leaf_size",
-            "only the fast engine's hierarchy has a leaf size: `fast = true` with \
-             `acceleration = \"bvh\"`"
-                .into(),
         );
     }
     if c.look_at.is_none() && (c.up.is_some() || c.plunge.is_some()) {

@@ -17,7 +17,7 @@ use crate::maths::values::{
 pub const MAX_PIXELS: u64 = 8192 * 8192;
 
 /// A whole scene file.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneFile {
     /// The `[render]` table.
@@ -36,7 +36,7 @@ pub struct SceneFile {
 
 /// One `[[meshes]]` entry: an OBJ file placed in the scene,
 /// `p' = rotation (scale p) + translation`.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct MeshSpec {
     /// The OBJ file, relative to the scene file.
@@ -80,8 +80,7 @@ pub enum AccelerationSpec {
     None,
     /// Test the mesh's bounding box first (session 5).
     Bbox,
-    /// A bounding volume hierarchy (session 6): the course's, or with `fast = true`
-    /// the fast engine's (leaves of at most `leaf_size` triangles).
+    /// A bounding volume hierarchy (session 6).
     Bvh,
 }
 
@@ -96,6 +95,7 @@ pub enum TriangleTestSpec {
     Watertight,
 }
 
+#[cfg(feature = "beyond")]
 /// `sampler = "independent"`, `"stratified"` or `"sobol"`: how the random numbers
 /// of a pixel's samples are chosen.
 #[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
@@ -111,7 +111,7 @@ pub enum SamplerSpec {
 }
 
 /// `[render]`: image size and how the render is done.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RenderSpec {
     /// Image width in pixels.
@@ -149,16 +149,22 @@ pub struct RenderSpec {
     pub acceleration: AccelerationSpec,
     /// Which ray-triangle test meshes use (session 5; default watertight).
     pub triangle_test: Option<TriangleTestSpec>,
-    /// Most triangles in a leaf of the fast engine's hierarchy (default 8).
+    /// Most triangles in a leaf of the fast engine's hierarchy, beyond the course
+    /// (default 8).
+    #[cfg(feature = "beyond")]
     pub leaf_size: Option<std::num::NonZeroU16>,
-    /// How the random numbers of a pixel's samples are chosen (session 3; default
-    /// independent).
+    /// How the random numbers of a pixel's samples are chosen, beyond the course
+    /// (default independent).
+    #[cfg(feature = "beyond")]
     pub sampler: Option<SamplerSpec>,
     /// Adaptive sampling's target: the relative standard error at which a pixel
-    /// stops taking samples (session 3; absent: every pixel takes `samples`).
+    /// stops taking samples, beyond the course (absent: every pixel takes
+    /// `samples`).
+    #[cfg(feature = "beyond")]
     pub noise: Option<Positive>,
-    /// Whether the fast engine renders, beyond the course (session 3; default false:
-    /// the course's code; the same image either way, the course's more slowly).
+    /// Whether the fast engine renders, beyond the course (default false: the
+    /// course's code; the same image either way, the course's more slowly).
+    #[cfg(feature = "beyond")]
     #[serde(default)]
     pub fast: bool,
 }
@@ -172,7 +178,7 @@ fn five() -> u32 {
 }
 
 /// `[camera]`: the eye.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct CameraSpec {
     /// Where the eye is.
@@ -194,7 +200,7 @@ pub struct CameraSpec {
 }
 
 /// `lens = { aperture = ..., focus = ... }`: a thin lens.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LensSpec {
     /// Radius of the lens.
@@ -204,7 +210,7 @@ pub struct LensSpec {
 }
 
 /// `[light]`: a point light, or with a radius a sphere light.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LightSpec {
     /// Where the light is (the centre of a sphere light).
@@ -216,7 +222,7 @@ pub struct LightSpec {
 }
 
 /// One `[[spheres]]` entry.
-#[derive(Debug, Deserialize)]
+#[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SphereSpec {
     /// Centre of the sphere.

@@ -6,13 +6,15 @@ use std::path::Path;
 
 use crate::files::{Disk, Files};
 use crate::maths::Real;
-use crate::maths::values::{Finite, Positive};
+use crate::maths::values::Finite;
 use crate::scene::Scene;
 use crate::scene_file::consistency::check_consistency;
 use crate::scene_file::format::SceneFile;
 use crate::scene_file::sessions::{check_materials, check_sessions};
 use crate::scene_file::{SceneError, one_line};
 
+#[cfg(feature = "beyond")]
+use crate::scene_file::beyond::scene;
 #[cfg(not(feature = "s3"))]
 use crate::scene_file::session1::scene;
 #[cfg(all(feature = "s3", not(feature = "s4")))]
@@ -23,7 +25,7 @@ use crate::scene_file::session4::scene;
 use crate::scene_file::session5::scene;
 #[cfg(all(feature = "s6", not(feature = "s7")))]
 use crate::scene_file::session6::scene;
-#[cfg(feature = "s7")]
+#[cfg(all(feature = "s7", not(feature = "beyond")))]
 use crate::scene_file::session7::scene;
 
 /// Render settings given on the command line, replacing those of the scene file
@@ -42,10 +44,12 @@ pub struct Overrides {
     pub seed: Option<u64>,
     /// The camera's plunge angle in degrees (the animation's variable).
     pub plunge: Option<Real>,
-    /// Adaptive sampling's target relative standard error (session 3).
+    /// Adaptive sampling's target relative standard error, beyond the course.
+    #[cfg(feature = "beyond")]
     pub noise: Option<Real>,
-    /// Render with the fast engine (session 3, beyond the course); `false` leaves
-    /// the scene file's choice.
+    /// Render with the fast engine, beyond the course; `false` leaves the scene
+    /// file's choice.
+    #[cfg(feature = "beyond")]
     pub fast: bool,
 }
 
@@ -56,11 +60,9 @@ impl Overrides {
         if let Some(p) = self.plunge {
             file.camera.plunge = Some(Finite::try_from(p).map_err(|e| ("camera.plunge", e))?);
         }
-        if let Some(noise) = self.noise {
-            file.render.noise = Some(Positive::try_from(noise).map_err(|e| ("render.noise", e))?);
-        }
+        #[cfg(feature = "beyond")]
+        crate::scene_file::beyond::apply_overrides((self.noise, self.fast), file)?;
         let r = &mut file.render;
-        r.fast |= self.fast;
         r.width = self.width.unwrap_or(r.width);
         r.height = self.height.unwrap_or(r.height);
         r.samples = self.samples.unwrap_or(r.samples);

@@ -15,6 +15,7 @@
 //! | [`session5`] | 5 | triangle meshes |
 //! | [`session6`] | 6 | hierarchies and smooth normals |
 //! | [`session7`] | 7 | textures and the aimed camera |
+//! | [`beyond`](mod@beyond) | `beyond` | the sampler, adaptive sampling and the fast engine, on top of the course's scene |
 //! | [`stages`](mod@stages) | 1 | the course's stages, one scene file each |
 
 pub mod consistency;
@@ -36,6 +37,9 @@ pub mod session5;
 pub mod session6;
 #[cfg(feature = "s7")]
 pub mod session7;
+
+#[cfg(feature = "beyond")]
+pub mod beyond;
 
 pub use error::{SceneError, one_line};
 pub use features::SESSION;

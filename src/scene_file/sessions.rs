@@ -83,19 +83,6 @@ const KEYS: &[SessionKey] = &[
         "antialiasing",
     ),
     (
-        |f| f.render.sampler.is_some(),
-        "render.sampler",
-        3,
-        "a choice of sampler",
-    ),
-    (
-        |f| f.render.noise.is_some(),
-        "render.noise",
-        3,
-        "adaptive sampling",
-    ),
-    (|f| f.render.fast, "render.fast", 3, "the fast engine"),
-    (
         |f| f.render.light_sampling,
         "render.light_sampling",
         4,

@@ -62,22 +62,14 @@ fn course_samples(stage: &Stage) -> u32 {
 }
 
 /// The stage rendered small (`noisy`: the size of Monte Carlo stages), with
-/// `samples` per pixel and `seed`, and its settings; by the fast engine (the same
-/// image, sooner) for a reference.
-fn film(
-    stage: &Stage,
-    noisy: bool,
-    samples: u32,
-    seed: Option<u64>,
-    fast: bool,
-) -> (Film, Settings) {
+/// `samples` per pixel and `seed`, and its settings.
+fn film(stage: &Stage, noisy: bool, samples: u32, seed: Option<u64>) -> (Film, Settings) {
     let size = if noisy { NOISY_SIZE } else { EXACT_SIZE };
     let overrides = Overrides {
         width: NonZeroU32::new(size),
         height: NonZeroU32::new(size),
         samples: NonZeroU32::new(samples),
         seed,
-        fast,
         ..Overrides::default()
     };
     let scene = stage
@@ -97,7 +89,7 @@ fn reference_path(stage: &Stage) -> PathBuf {
 pub fn check(stage: &Stage) -> Outcome {
     let samples = course_samples(stage);
     let noisy = samples > 1;
-    let (film, settings) = film(stage, noisy, samples, None, false);
+    let (film, settings) = film(stage, noisy, samples, None);
     let gamma = settings.gamma;
     let reference = reference_path(stage);
     let yours = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{}.png", stage.name));
@@ -364,10 +356,10 @@ pub fn write_references() -> ExitCode {
         let samples = course_samples(stage);
         let written = if samples > 1 {
             let more = samples * REFERENCE_FACTOR;
-            let (film, settings) = film(stage, true, more, Some(REFERENCE_SEED), true);
+            let (film, settings) = film(stage, true, more, Some(REFERENCE_SEED));
             to_rgb16(&film, settings.gamma).save(&path)
         } else {
-            let (film, settings) = film(stage, false, 1, None, true);
+            let (film, settings) = film(stage, false, 1, None);
             displayed(&film, settings.gamma).save(&path)
         };
         match written {

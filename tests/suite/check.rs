@@ -16,7 +16,6 @@ use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::maths::{Colour, PI, Real, pixel_rng};
 use raycourse::render::film::display;
-use raycourse::studies::variant::Variant;
 use raycourse::{Overrides, Scene, Stage, encode_png, parse_scene, render, stages};
 
 /// Width and height of the images checked.
@@ -33,8 +32,9 @@ fn scene(stage: &Stage, edit: &dyn Fn(&str) -> String, seed: u64, samples: Optio
     scene_at(stage, edit, (seed, samples), SIZE)
 }
 
-/// [`scene`] at `size` x `size` pixels, rendered by the fast engine and its meshes
-/// searched by its hierarchy, which give the course's bytes in less time.
+/// [`scene`] at `size` x `size` pixels, its meshes searched by a hierarchy and
+/// (beyond the course) rendered by the fast engine, which give the course's bytes
+/// in less time.
 fn scene_at(
     stage: &Stage,
     edit: &dyn Fn(&str) -> String,
@@ -46,11 +46,16 @@ fn scene_at(
         height: NonZeroU32::new(size),
         samples: samples.and_then(NonZeroU32::new),
         seed: Some(seed),
+        #[cfg(feature = "beyond")]
         fast: true,
         ..Overrides::default()
     };
-    let hierarchy = Variant::parse("hierarchy:render.acceleration=bvh").unwrap();
-    let text = hierarchy.apply(&edit(stage.source)).unwrap();
+    let mut file: toml::Table = edit(stage.source).parse().unwrap();
+    file["render"]
+        .as_table_mut()
+        .unwrap()
+        .insert("acceleration".into(), "bvh".into());
+    let text = toml::to_string(&file).unwrap();
     parse_scene(&text, &stage.file(), &overrides).unwrap()
 }
 

@@ -147,7 +147,7 @@ fn no_arguments_renders_the_last_stage_of_the_build() {
 }
 
 /// A `.rays` file (RAYFORMAT.md) of `kind` holding `records`.
-#[cfg(feature = "s6")]
+#[cfg(feature = "beyond")]
 fn ray_file(kind: u32, records: &[[f32; 8]]) -> Vec<u8> {
     let mut bytes = b"RAYS".to_vec();
     bytes.extend(1u32.to_le_bytes());
@@ -157,7 +157,7 @@ fn ray_file(kind: u32, records: &[[f32; 8]]) -> Vec<u8> {
     bytes
 }
 
-#[cfg(feature = "s6")]
+#[cfg(feature = "beyond")]
 #[test]
 fn rays_prints_the_checksums_of_each_set() {
     let dir = tempfile::tempdir().unwrap();
@@ -208,7 +208,7 @@ fn rays_prints_the_checksums_of_each_set() {
 }
 
 /// The CSV of a study with two variants whose error halves as the samples double.
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 fn two_variant_study(
     folder: &Path,
     errors: impl Fn(u32) -> [raycourse::maths::Real; 2],
@@ -233,7 +233,7 @@ fn two_variant_study(
 }
 
 /// `plot` draws a PNG of its size with one colour of line per variant, and labels.
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 #[test]
 fn plots_are_pngs_of_the_plot_size_with_two_colours_of_lines() {
     use plotters::style::{Color, Palette, Palette99};
@@ -260,7 +260,7 @@ fn plots_are_pngs_of_the_plot_size_with_two_colours_of_lines() {
 }
 
 /// Exact images have no logarithm of their error: nothing to plot, said, and no file.
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 #[test]
 fn exact_images_have_no_plot() {
     let dir = tempfile::tempdir().unwrap();

@@ -66,7 +66,8 @@ fn settings(bounces: u32, russian_roulette: Option<Real>) -> Settings {
 /// scenes are grey).
 #[cfg(feature = "s3")]
 fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Vec<Real> {
-    raycourse::samplers::pixel::pixel_samples(tracer, row, column)
+    crate::common::pixel_samples(tracer, row, column)
+        .iter()
         .map(|c| c.x)
         .collect()
 }
@@ -148,14 +149,19 @@ fn the_bounce_limit_biases_a_grey_enclosure_low() {
     }
 }
 
-#[cfg(feature = "s4")]
+#[cfg(feature = "beyond")]
 #[test]
 fn russian_roulette_removes_the_bias_with_every_sampler() {
     use raycourse::scene::beyond::Sampler;
     for sampler in [Sampler::Independent, Sampler::Stratified, Sampler::Sobol] {
         let mut scene = furnace(0.5, 1.0, None, settings(2, Some(0.6)));
         scene.settings.beyond.sampler = sampler;
-        let all: Vec<Real> = samples(&scene).into_iter().flatten().collect();
+        let mut tracer = Tracer::new(&scene);
+        let mut all: Vec<Real> = vec![];
+        for (row, column) in (0..SIZE).flat_map(|r| (0..SIZE).map(move |c| (r, c))) {
+            let samples = raycourse::samplers::pixel::pixel_samples(&mut tracer, row, column);
+            all.extend(samples.map(|c| c.x));
+        }
         let (mean, error) = mean_and_error(&all);
         assert!(
             (mean - 2.0).abs() <= 3.0 * error,

@@ -18,16 +18,16 @@ mod furnace;
 
 #[cfg(all(feature = "s3", not(feature = "f32")))]
 mod chi2;
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 mod converge;
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 mod engines;
-#[cfg(feature = "s3")]
+#[cfg(feature = "beyond")]
 mod scale_sweep;
 
 #[cfg(feature = "s4")]
 mod light_sampling;
-#[cfg(feature = "s4")]
+#[cfg(feature = "beyond")]
 mod samplers;
 
 #[cfg(feature = "s5")]

@@ -1,5 +1,6 @@
 //! `cfg` predicates as a session view sees them: every `feature = "sN"` is known
-//! (true for the sessions the view holds), everything else is left as it was.
+//! (true for the sessions the view holds), and so is `feature = "beyond"` (false:
+//! no view holds what goes beyond the course); everything else is left as it was.
 
 use syn::Meta;
 use syn::punctuated::Punctuated;
@@ -31,7 +32,15 @@ fn session_feature(meta: &Meta) -> Option<u32> {
     else {
         return None;
     };
-    let name = name.value();
+    session_of(&name.value())
+}
+
+/// The session that brings the Cargo feature `name`: `sN` is session N, and
+/// `beyond`, which no view holds, counts as the session after the last.
+pub fn session_of(name: &str) -> Option<u32> {
+    if name == "beyond" {
+        return Some(8);
+    }
     let number = name.strip_prefix('s')?.parse().ok()?;
     (1..=7).contains(&number).then_some(number)
 }

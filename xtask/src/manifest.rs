@@ -2,20 +2,13 @@
 
 use toml_edit::{DocumentMut, Item, Value};
 
-/// The session of a feature name `sN`, if it is one.
-fn session_of(feature: &str) -> Option<u32> {
-    feature
-        .strip_prefix('s')?
-        .parse()
-        .ok()
-        .filter(|n| (1..=7).contains(n))
-}
+use crate::cfg::session_of;
 
 /// `Cargo.toml` text as it stands after `session`: its version marked with the
 /// session (`0.1.0-s3`, so that views built side by side stay apart); no features
 /// `s1`..`s7` and no
 /// default features; dependencies that a session brings (`dep:tobj`) plain when
-/// the view has that session, absent otherwise; a workspace of its own (an empty
+/// the view has that session, absent otherwise (those beyond the course always); a workspace of its own (an empty
 /// `[workspace]` table, so that the view builds wherever it is written, even
 /// inside this repository's `target/`); benches and examples
 /// that need a later session left out, the others without their session
@@ -30,8 +23,10 @@ pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), 
     doc["package"]["version"] = toml_edit::value(format!("{version}-s{session}"));
     let mut brought = vec![];
     if let Some(features) = doc.get_mut("features").and_then(Item::as_table_mut) {
-        for n in 1..=7u32 {
-            let name = format!("s{n}");
+        for (n, name) in (1..=7u32)
+            .map(|n| (n, format!("s{n}")))
+            .chain([(8, "beyond".into())])
+        {
             let deps: Vec<String> = features
                 .get(&name)
                 .and_then(Item::as_array)
@@ -120,11 +115,13 @@ default = ["s7"]
 s1 = []
 s5 = ["s1", "dep:tobj"]
 s7 = ["s5"]
+beyond = ["s7", "dep:wide"]
 f32 = []
 
 [dependencies]
 glam = "0.30"
 tobj = { version = "4", optional = true }
+wide = { version = "1", optional = true }
 
 [[bench]]
 name = "bvh"
@@ -132,6 +129,10 @@ required-features = ["s5"]
 
 [[bench]]
 name = "render"
+
+[[bench]]
+name = "peers"
+required-features = ["beyond"]
 "#;
 
     #[test]
@@ -143,7 +144,7 @@ name = "render"
         let features = doc["features"].as_table().unwrap();
         assert_eq!(features.iter().map(|(k, _)| k).collect::<Vec<_>>(), ["f32"]);
         assert!(doc["dependencies"].get("tobj").is_none());
-        assert_eq!(dropped, ["bvh"]);
+        assert_eq!(dropped, ["bvh", "peers"]);
     }
 
     #[test]
@@ -152,7 +153,16 @@ name = "render"
         let doc: toml_edit::DocumentMut = text.parse().unwrap();
         let tobj = doc["dependencies"]["tobj"].as_inline_table().unwrap();
         assert!(tobj.get("optional").is_none());
-        assert!(dropped.is_empty());
+        assert_eq!(dropped, ["peers"]);
         assert!(!text.contains("required-features"), "{text}");
+    }
+
+    #[test]
+    fn no_view_holds_what_goes_beyond_the_course() {
+        let (text, dropped) = view_manifest(MANIFEST, 7).unwrap();
+        let doc: toml_edit::DocumentMut = text.parse().unwrap();
+        assert!(doc["features"].get("beyond").is_none(), "{text}");
+        assert!(doc["dependencies"].get("wide").is_none(), "{text}");
+        assert_eq!(dropped, ["peers"]);
     }
 }

@@ -213,6 +213,7 @@ fn expr_attrs(expr: &Expr) -> &[Attribute] {
         Expr::Macro(e) => &e.attrs,
         Expr::Return(e) => &e.attrs,
         Expr::Path(e) => &e.attrs,
+        Expr::Try(e) => &e.attrs,
         _ => &[],
     }
 }
@@ -430,6 +431,18 @@ mod tests {
         );
         let at1 = view(text, 1);
         assert!(at1.contains("let a") && !at1.contains("let b"));
+    }
+
+    #[test]
+    fn what_goes_beyond_the_course_is_in_no_view() {
+        let text = "#[cfg(feature = \"beyond\")]\npub mod fast;\n\
+                    #[cfg(all(feature = \"s7\", not(feature = \"beyond\")))]\nuse a::scene;\n\
+                    #[cfg(feature = \"beyond\")]\nuse b::scene;\n\
+                    fn f() -> R {\n    #[cfg(feature = \"beyond\")]\n    b::more()?;\n    Ok(())\n}\n";
+        assert_eq!(
+            view(text, 7),
+            "use a::scene;\nfn f() -> R {\n    Ok(())\n}\n"
+        );
     }
 
     #[test]

@@ -1,5 +1,6 @@
-//! Reference images, cached on disk: the converged image every render of a study
-//! is measured against is expensive, so it is rendered once per scene and setting.
+//! Films cached on disk: a reference image (what `check` compares a student's image
+//! with, what a study measures its renders against) is expensive, so it is rendered
+//! once per scene and setting.
 
 use std::hash::{DefaultHasher, Hash, Hasher};
 use std::path::{Path, PathBuf};

@@ -1,0 +1,129 @@
+//! The command line's options beyond the course: adaptive sampling and its map, and
+//! the fast engine, with the checks that it gives the course's bytes.
+
+use std::path::{Path, PathBuf};
+
+use clap::Args;
+use raycourse::maths::Real;
+use raycourse::render::png::encode_rgb8;
+use raycourse::{Overrides, Scene, Stage};
+
+use crate::commands::failure::Failure;
+use crate::commands::options::RenderArgs;
+use crate::commands::output::{Timed, timed_render, write};
+use crate::commands::stage::render_stage;
+
+/// A render's settings beyond the course.
+#[derive(Args, Clone, Debug, Default)]
+pub struct BeyondArgs {
+    /// Adaptive sampling: each pixel takes samples until the estimated relative
+    /// standard error of its mean is below this (such as 0.02), up to 4 times `--spp`.
+    #[arg(long)]
+    pub noise: Option<Real>,
+    /// Also write a grey PNG of the samples each pixel took, black for the fewest
+    /// and white for the most.
+    #[arg(long)]
+    pub noise_map: Option<PathBuf>,
+    /// Render with the fast engine, beyond the course: the same image as the
+    /// course's functions give, in less time; an edit of a course function does not
+    /// show in it.
+    #[arg(long)]
+    pub fast: bool,
+}
+
+impl BeyondArgs {
+    /// `overrides` with these settings put in.
+    pub fn applied(&self, overrides: Overrides) -> Overrides {
+        Overrides {
+            noise: self.noise,
+            fast: self.fast,
+            ..overrides
+        }
+    }
+
+    /// Writes the map of the samples each pixel of `scene` took (`taken`), if
+    /// `--noise-map` asks for it, and says so.
+    pub fn write_noise_map(
+        &self,
+        label: &str,
+        scene: &Scene,
+        taken: &[u32],
+    ) -> Result<(), Failure> {
+        let Some(map) = &self.noise_map else {
+            return Ok(());
+        };
+        write(map, &sample_map(taken, scene))?;
+        let (fewest, most) = (taken.iter().min(), taken.iter().max());
+        println!(
+            "{label}: samples per pixel from {} (black) to {} (white) -> {}",
+            fewest.unwrap_or(&0),
+            most.unwrap_or(&0),
+            map.display()
+        );
+        Ok(())
+    }
+}
+
+/// A grey image of the samples each pixel took, black for the fewest.
+fn sample_map(taken: &[u32], scene: &Scene) -> Vec<u8> {
+    let fewest = taken.iter().copied().min().unwrap_or(0);
+    let most = taken.iter().copied().max().unwrap_or(0);
+    let span = f64::from((most - fewest).max(1));
+    let grey: Vec<u8> = taken
+        .iter()
+        .flat_map(|&n| [(255.0 * f64::from(n - fewest) / span).round() as u8; 3])
+        .collect();
+    encode_rgb8(&grey, scene.camera.width, scene.camera.height)
+}
+
+/// The last columns of `bench`'s row of `stage`: its time by the fast engine and the
+/// speed-up over the course's code (`course`), whose image it must give.
+pub fn fast_columns(
+    stage: &Stage,
+    course: &Timed,
+    options: &RenderArgs,
+) -> Result<String, Failure> {
+    let fast = Overrides {
+        fast: true,
+        ..Overrides::default()
+    };
+    let scene = stage.scene(&fast)?;
+    let fast = timed_render(stage.name, &scene, options)?;
+    if fast.result.film != course.result.film {
+        return Err(Failure::Machine(format!(
+            "{}: the fast engine's image differs from the course's code's",
+            stage.name
+        )));
+    }
+    let speed_up = course.seconds / fast.seconds;
+    Ok(format!(" {:.2} s | {speed_up:.2}x |", fast.seconds))
+}
+
+/// Renders `stage` with `options` by the fast engine, beside `course` (the course's
+/// render), and fails unless the two files have the same bytes.
+pub fn same_bytes_by_the_fast_engine(
+    stage: &Stage,
+    options: RenderArgs,
+    course: &Path,
+) -> Result<(), Failure> {
+    let fast = course.with_extension("fast.png");
+    let mut options = RenderArgs {
+        out: Some(fast.clone()),
+        ..options
+    };
+    options.beyond.fast = true;
+    render_stage(stage, &options)?;
+    let read = |path: &Path| {
+        std::fs::read(path)
+            .map_err(|e| Failure::Machine(format!("{}: cannot read the file: {e}", path.display())))
+    };
+    let same = read(course)? == read(&fast)?;
+    std::fs::remove_file(&fast).map_err(|e| Failure::write(&fast, e))?;
+    match same {
+        true => Ok(()),
+        false => Err(Failure::Machine(format!(
+            "{}: the fast engine's image differs from the course's code's",
+            stage.name
+        ))),
+    }
+}
