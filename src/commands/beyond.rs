@@ -31,16 +31,19 @@ pub struct BeyondArgs {
     pub fast: bool,
 }
 
-impl BeyondArgs {
-    /// `overrides` with these settings put in.
-    pub fn applied(&self, overrides: Overrides) -> Overrides {
+impl RenderArgs {
+    /// The scene-file settings these options replace, those beyond the course
+    /// included.
+    pub fn overrides(&self) -> Overrides {
         Overrides {
-            noise: self.noise,
-            fast: self.fast,
-            ..overrides
+            noise: self.beyond.noise,
+            fast: self.beyond.fast,
+            ..self.scene.overrides()
         }
     }
+}
 
+impl BeyondArgs {
     /// Writes the map of the samples each pixel of `scene` took (`taken`), if
     /// `--noise-map` asks for it, and says so.
     pub fn write_noise_map(

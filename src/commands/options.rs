@@ -76,13 +76,11 @@ fn aov_parser() -> impl clap::builder::TypedValueParser<Value = Aov> {
         .map(|name| Aov::from_name(&name).expect("clap accepts only the kinds' names"))
 }
 
+#[cfg(not(feature = "beyond"))]
 impl RenderArgs {
     /// The scene-file settings these options replace.
     pub fn overrides(&self) -> Overrides {
-        let overrides = self.scene.overrides();
-        #[cfg(feature = "beyond")]
-        let overrides = self.beyond.applied(overrides);
-        overrides
+        self.scene.overrides()
     }
 }
 
