@@ -57,6 +57,7 @@ fn main() -> ExitCode {
     let matches = command(&verbs).get_matches();
     match dispatch(&verbs, &matches) {
         Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Differs) => Failure::Differs.exit_code(),
         Err(failure) => {
             eprintln!("error: {failure}");
             failure.exit_code()

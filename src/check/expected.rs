@@ -6,7 +6,7 @@ use std::path::Path;
 
 use crate::files::Files;
 use crate::render::Film;
-use crate::render::cache::{load_reference, reference_path, save_reference};
+use crate::render::cache::cached_render;
 use crate::render_reporting;
 use crate::scene::Scene;
 use crate::scene_file::{Overrides, SESSION, SceneError, Stage, parse_scene_from};
@@ -109,18 +109,9 @@ impl Source<'_> {
     pub fn film(&self, text: &str, samples: u32, seed: Option<u64>) -> Result<Film, SceneError> {
         let text = searched_by_hierarchy(text);
         let scene = self.scene(&text, Some(samples), seed)?;
-        let key = format!(
-            "check\n{text}\n{}x{}, {samples} spp, seed {seed:?}",
-            self.size.0, self.size.1
-        );
-        let cached = reference_path(self.cache, &key);
-        if let Some(film) = load_reference(&cached) {
-            (self.progress)(u64::from(scene.camera.height) * u64::from(samples));
-            return Ok(film);
-        }
-        let film = render_reporting(&scene, self.progress).film;
+        let render = |progress: &(dyn Fn(u64) + Sync)| render_reporting(&scene, progress).film;
         // A cache that cannot be written only costs time on the next check.
-        let _ = save_reference(&cached, &film);
+        let (film, _saved) = cached_render(self.cache, &text, &scene, self.progress, render);
         Ok(film)
     }
 }

@@ -41,7 +41,6 @@ struct AnimateArgs {
 /// The `animate` command (session 7: the aimed camera).
 pub const VERB: Verb = Verb {
     rank: 5,
-    session: 7,
     command: <AnimateArgs as clap::CommandFactory>::command,
     run,
 };
@@ -106,7 +105,7 @@ fn animate(
             let stem = out.file_stem().unwrap_or_default().to_string_lossy();
             write(&out.with_file_name(format!("{stem}-{k:03}.png")), &png)?;
         }
-        if !options.quiet {
+        if !options.work.quiet {
             eprintln!("{label}: {:.2} s", timed.seconds);
         }
     }

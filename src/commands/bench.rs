@@ -2,14 +2,12 @@
 //! code beside the times the course reported on its own machine; beyond the course,
 //! with the fast engine too.
 
-use std::num::NonZeroUsize;
-
 use clap::{ArgMatches, FromArgMatches, Parser};
 use raycourse::{Overrides, Scene, Stage, stages};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
-use crate::commands::options::RenderArgs;
+use crate::commands::options::{RenderArgs, WorkArgs};
 use crate::commands::output::{Timed, timed_render};
 
 /// Render the stages at the course's settings and print a table of their times by
@@ -21,15 +19,13 @@ use crate::commands::output::{Timed, timed_render};
 struct BenchArgs {
     /// Sessions whose stages are timed (default: all of this build's).
     sessions: Vec<u32>,
-    /// Worker threads (default: one per core).
-    #[arg(long)]
-    threads: Option<NonZeroUsize>,
+    #[command(flatten)]
+    work: WorkArgs,
 }
 
 /// The `bench` command.
 pub const VERB: Verb = Verb {
     rank: 4,
-    session: 1,
     command: <BenchArgs as clap::CommandFactory>::command,
     run,
 };
@@ -52,8 +48,7 @@ fn course_time(figure: Option<u32>) -> &'static str {
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = BenchArgs::from_arg_matches(matches)?;
     let options = RenderArgs {
-        threads: args.threads,
-        quiet: true,
+        work: args.work.clone(),
         ..RenderArgs::default()
     };
     let header = "| stage | settings | course's code | rays | Mrays/s | course |";

@@ -2,7 +2,6 @@
 //! not, what differs, where, and which classic mistake explains it;
 //! `raycourse check --all DIR` grades a folder of them.
 
-use std::num::NonZeroUsize;
 use std::path::{Path, PathBuf};
 
 use clap::builder::PossibleValuesParser;
@@ -16,7 +15,7 @@ use raycourse::{Stage, stages};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
-use crate::commands::options::thread_pool;
+use crate::commands::options::WorkArgs;
 use crate::commands::output::write;
 
 /// Check an image of a stage made by your own renderer, in any language: render
@@ -46,12 +45,8 @@ struct CheckArgs {
     /// Folder of cached reference images.
     #[arg(long, default_value = "out/reference")]
     cache: PathBuf,
-    /// Worker threads (default: one per core).
-    #[arg(long)]
-    threads: Option<NonZeroUsize>,
-    /// Hide the progress bar.
-    #[arg(long, short)]
-    quiet: bool,
+    #[command(flatten)]
+    work: WorkArgs,
     /// The report's language, `en` or `fr` (default: the locale's, from `LC_ALL`,
     /// `LC_MESSAGES` or `LANG`; English unless it is French).
     #[arg(long, value_parser = ["en", "fr"])]
@@ -70,7 +65,6 @@ impl CheckArgs {
 /// The `check` command (the whole course: session 7).
 pub const VERB: Verb = Verb {
     rank: 9,
-    session: 7,
     command: <CheckArgs as clap::CommandFactory>::command,
     run,
 };
@@ -109,7 +103,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
     }
     match report.verdict {
         Verdict::Matches => Ok(()),
-        Verdict::Differs => std::process::exit(1),
+        Verdict::Differs => Err(Failure::Differs),
     }
 }
 
@@ -132,8 +126,8 @@ fn check_one(
     image: &RgbImage,
     path: &Path,
 ) -> Result<Report, Failure> {
-    let pool = thread_pool(args.threads)?;
-    let bar = if args.quiet {
+    let pool = args.work.pool()?;
+    let bar = if args.work.quiet {
         ProgressBar::hidden()
     } else {
         let style = ProgressStyle::with_template("{msg} {spinner} {pos} rows")
@@ -303,7 +297,7 @@ fn finish(all_pass: bool) -> Result<(), Failure> {
     if all_pass {
         Ok(())
     } else {
-        std::process::exit(1)
+        Err(Failure::Differs)
     }
 }
 

@@ -1,7 +1,7 @@
 //! `raycourse converge <stage>`: how fast a stage's error falls, against samples and
 //! against time, measured against a converged reference.
 
-use std::num::{NonZeroU32, NonZeroUsize};
+use std::num::NonZeroU32;
 use std::path::{Path, PathBuf};
 
 use clap::builder::PossibleValuesParser;
@@ -9,7 +9,7 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 use indicatif::ProgressBar;
 use raycourse::maths::Real;
 use raycourse::render::Film;
-use raycourse::render::cache::{load_reference, reference_path, save_reference};
+use raycourse::render::cache::cached_render;
 use raycourse::render_reporting;
 use raycourse::studies::convergence::{Rung, climb, fitted_slope, sample_ladder};
 use raycourse::studies::variant::{Edit, Variant, comparison, comparison_names};
@@ -17,7 +17,7 @@ use raycourse::{Overrides, Scene, parse_scene, stages};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
-use crate::commands::options::thread_pool;
+use crate::commands::options::WorkArgs;
 use crate::commands::output::{progress_bar, write};
 use crate::commands::plot::plot_rungs;
 
@@ -62,22 +62,17 @@ struct ConvergeArgs {
     /// Image height in pixels.
     #[arg(long)]
     height: Option<NonZeroU32>,
-    /// Worker threads (default: one per core).
-    #[arg(long)]
-    threads: Option<NonZeroUsize>,
+    #[command(flatten)]
+    work: WorkArgs,
     /// Render with the fast engine, beyond the course: the same images, in less
     /// time.
     #[arg(long)]
     fast: bool,
-    /// Hide the progress bar.
-    #[arg(long, short)]
-    quiet: bool,
 }
 
 /// The `converge` command.
 pub const VERB: Verb = Verb {
     rank: 6,
-    session: 3,
     command: <ConvergeArgs as clap::CommandFactory>::command,
     run,
 };
@@ -166,7 +161,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
                 .map(|s| s.0)
         })
         .collect::<Result<Vec<Scene>, Failure>>()?;
-    let pool = thread_pool(args.threads)?;
+    let pool = args.work.pool()?;
     let ladder = sample_ladder(args.max_spp.get());
     let (truth, text) = study.scene(reference_edits, args.reference_spp, Some(REFERENCE_SEED))?;
     let rows = u64::from(truth.camera.height);
@@ -174,7 +169,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let bar = progress_bar(
         rows * (work + u64::from(args.reference_spp.get())),
         "",
-        args.quiet,
+        args.work.quiet,
     );
     let reference = pool.install(|| reference(&args, &truth, &text, &bar))?;
     let mut rungs = vec![];
@@ -219,7 +214,8 @@ fn scene_source(name: &str) -> Result<(String, PathBuf), Failure> {
 }
 
 /// The reference image of `truth` (its file's `text`), from the cache when it is
-/// there, rendered and cached otherwise. The cache key holds nothing that prints
+/// there, rendered and cached otherwise ([`cached_render`]); a cache that cannot be
+/// written is said, and the study goes on. The cache key holds nothing that prints
 /// differently in single precision, so both builds share a reference.
 fn reference(
     args: &ConvergeArgs,
@@ -227,20 +223,16 @@ fn reference(
     text: &str,
     bar: &ProgressBar,
 ) -> Result<Film, Failure> {
-    let (camera, settings) = (truth.camera, truth.settings);
-    let key = format!(
-        "{text}\n{}x{}, {} spp, seed {}",
-        camera.width, camera.height, settings.samples, settings.seed
-    );
-    let cached = reference_path(&args.cache, &key);
-    let work = u64::from(camera.height) * u64::from(settings.samples);
-    if let Some(film) = load_reference(&cached) {
-        bar.inc(work);
-        return Ok(film);
+    bar.set_message(format!("reference, {} spp", truth.settings.samples));
+    let progress = |done| bar.inc(done);
+    let render = |progress: &(dyn Fn(u64) + Sync)| render_reporting(truth, progress).film;
+    let (film, saved) = cached_render(&args.cache, text, truth, &progress, render);
+    if let Err(e) = saved {
+        eprintln!(
+            "warning: {}: cannot keep the reference, so the next run renders it again: {e}",
+            args.cache.display()
+        );
     }
-    bar.set_message(format!("reference, {} spp", settings.samples));
-    let film = render_reporting(truth, &|done| bar.inc(done)).film;
-    save_reference(&cached, &film).map_err(|e| Failure::write(&cached, e))?;
     Ok(film)
 }
 

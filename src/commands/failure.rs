@@ -2,8 +2,10 @@
 
 use std::path::Path;
 
-/// Why a command failed: its input (exit code 2, as for clap's usage errors) or the
-/// machine (exit code 1). The message is one line that says what and where.
+/// Why a command failed: its input (exit code 2, as for clap's usage errors), the
+/// machine (exit code 1), or an image that is not the stage's (exit code 1, after
+/// `check`'s report has said why). The message is one line that says what and
+/// where.
 #[derive(Debug, thiserror::Error)]
 pub enum Failure {
     /// A scene, a file or an argument that cannot be used.
@@ -12,6 +14,14 @@ pub enum Failure {
     /// Something the machine could not do: start threads, write a file.
     #[error("{0}")]
     Machine(String),
+    /// A checked image that differs from the stage's; the report printed before
+    /// says how, so the message is empty.
+    #[allow(
+        dead_code,
+        reason = "`check`, which finds such an image, comes with session 7"
+    )]
+    #[error("")]
+    Differs,
 }
 
 impl Failure {
@@ -28,11 +38,12 @@ impl Failure {
         ))
     }
 
-    /// The exit code: 2 for bad input, 1 for a failure of the machine.
+    /// The exit code: 2 for bad input, 1 for a failure of the machine or an image
+    /// that differs.
     pub fn exit_code(&self) -> std::process::ExitCode {
         match self {
             Failure::Input(_) => std::process::ExitCode::from(2),
-            Failure::Machine(_) => std::process::ExitCode::FAILURE,
+            Failure::Machine(_) | Failure::Differs => std::process::ExitCode::FAILURE,
         }
     }
 }

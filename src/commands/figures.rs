@@ -9,7 +9,7 @@ use raycourse::stages;
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
-use crate::commands::options::RenderArgs;
+use crate::commands::options::{RenderArgs, WorkArgs};
 use crate::commands::stage::render_stage;
 
 /// Render every stage of this build at the course's settings into a folder, as
@@ -25,15 +25,13 @@ struct FiguresArgs {
     #[cfg(feature = "beyond")]
     #[arg(long)]
     fast: bool,
-    /// Hide the progress bars.
-    #[arg(long, short)]
-    quiet: bool,
+    #[command(flatten)]
+    work: WorkArgs,
 }
 
 /// The `figures` command.
 pub const VERB: Verb = Verb {
     rank: 3,
-    session: 1,
     command: <FiguresArgs as clap::CommandFactory>::command,
     run,
 };
@@ -46,7 +44,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         let out = args.dir.join(format!("{}.png", stage.name));
         let options = RenderArgs {
             out: Some(out.clone()),
-            quiet: args.quiet,
+            work: args.work.clone(),
             ..RenderArgs::default()
         };
         render_stage(stage, &options)?;

@@ -14,7 +14,6 @@ struct ListArgs {}
 /// The `list` command.
 pub const VERB: Verb = Verb {
     rank: 1,
-    session: 1,
     command: <ListArgs as clap::CommandFactory>::command,
     run,
 };

@@ -5,7 +5,6 @@ pub mod failure;
 pub mod options;
 pub mod output;
 
-pub mod animate;
 pub mod bench;
 pub mod figures;
 pub mod list;
@@ -23,20 +22,20 @@ pub mod plot;
 pub mod rays;
 
 #[cfg(feature = "s7")]
+pub mod animate;
+#[cfg(feature = "s7")]
 pub mod check;
 
 use clap::ArgMatches;
 
 use failure::Failure;
 
-/// A command: the session that brings it, its arguments as clap describes them, and
+/// A command: its place in the help, its arguments as clap describes them, and
 /// what it does with them.
 #[derive(Clone, Copy)]
 pub struct Verb {
     /// Where it stands in `raycourse --help`: the commonest first.
     pub rank: u32,
-    /// The first session whose build has the command.
-    pub session: u32,
     /// Its name, help and arguments.
     pub command: fn() -> clap::Command,
     /// Runs it on the arguments given.
@@ -49,11 +48,7 @@ inventory::collect!(Verb);
 /// of their rank. Each command's file registers it; the files of later sessions'
 /// commands are only compiled in those sessions' builds.
 pub fn verbs() -> Vec<Verb> {
-    let mut verbs: Vec<Verb> = inventory::iter::<Verb>
-        .into_iter()
-        .copied()
-        .filter(|v| v.session <= raycourse::scene_file::SESSION)
-        .collect();
+    let mut verbs: Vec<Verb> = inventory::iter::<Verb>.into_iter().copied().collect();
     verbs.sort_by_key(|v| v.rank);
     verbs
 }

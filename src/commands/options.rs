@@ -44,14 +44,32 @@ impl SceneArgs {
     }
 }
 
+/// How a command does its work, whatever it renders: its worker threads and its
+/// progress bar. Every command that renders takes these two options.
+#[derive(Args, Clone, Debug, Default)]
+pub struct WorkArgs {
+    /// Worker threads (default: one per core; at most 1024).
+    #[arg(long)]
+    pub threads: Option<NonZeroUsize>,
+    /// Hide the progress bar.
+    #[arg(long, short)]
+    pub quiet: bool,
+}
+
+impl WorkArgs {
+    /// The thread pool of `--threads` ([`thread_pool`]).
+    pub fn pool(&self) -> Result<rayon::ThreadPool, Failure> {
+        thread_pool(self.threads)
+    }
+}
+
 /// Settings that replace the scene file's for one render.
 #[derive(Args, Clone, Debug, Default)]
 pub struct RenderArgs {
     #[command(flatten)]
     pub scene: SceneArgs,
-    /// Worker threads (default: one per core).
-    #[arg(long)]
-    pub threads: Option<NonZeroUsize>,
+    #[command(flatten)]
+    pub work: WorkArgs,
     /// Output PNG (default: out/<name>.png).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -64,9 +82,6 @@ pub struct RenderArgs {
     /// (spheres, boxes and triangles tested), into `out/<name>-<kind>.png`.
     #[arg(long, value_parser = aov_parser())]
     pub aov: Option<Aov>,
-    /// Hide the progress bar.
-    #[arg(long, short)]
-    pub quiet: bool,
 }
 
 /// The kinds of `--aov`, by name.

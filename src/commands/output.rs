@@ -11,7 +11,7 @@ use raycourse::render::png::encode_rgb8;
 use raycourse::{Render, Scene, encode_png, render_reporting};
 
 use crate::commands::failure::Failure;
-use crate::commands::options::{RenderArgs, thread_pool};
+use crate::commands::options::RenderArgs;
 
 /// A progress bar of `length` steps labelled `label`, hidden when `quiet` (and by
 /// indicatif when stderr is not a terminal).
@@ -37,14 +37,14 @@ pub struct Timed {
     pub threads: usize,
 }
 
-/// Renders `scene` on `options.threads` threads with a progress bar (unless quiet).
+/// Renders `scene` on `--threads` threads with a progress bar (unless quiet).
 pub fn timed_render(label: &str, scene: &Scene, options: &RenderArgs) -> Result<Timed, Failure> {
-    let pool = thread_pool(options.threads)?;
+    let pool = options.work.pool()?;
     let samples = u64::from(scene.settings.samples);
     let bar = progress_bar(
         u64::from(scene.camera.height) * samples,
         label,
-        options.quiet,
+        options.work.quiet,
     );
     let start = Instant::now();
     let result = pool.install(|| render_reporting(scene, &|done| bar.inc(done)));
@@ -145,7 +145,7 @@ fn aov_to_file(
     options: &RenderArgs,
     out: &Path,
 ) -> Result<(), Failure> {
-    let image = thread_pool(options.threads)?.install(|| see(scene, aov));
+    let image = options.work.pool()?.install(|| see(scene, aov));
     write(out, &encode_rgb8(&image.rgb, image.width, image.height))?;
     let range = match image.range {
         Some((low, high)) => format!(

@@ -36,7 +36,6 @@ struct PlotArgs {
 /// The `plot` command.
 pub const VERB: Verb = Verb {
     rank: 7,
-    session: 3,
     command: <PlotArgs as clap::CommandFactory>::command,
     run,
 };

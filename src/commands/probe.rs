@@ -42,7 +42,6 @@ struct ProbeArgs {
 /// The `probe` command.
 pub const VERB: Verb = Verb {
     rank: 10,
-    session: 1,
     command: <ProbeArgs as clap::CommandFactory>::command,
     run,
 };

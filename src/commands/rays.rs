@@ -60,7 +60,6 @@ enum BvhKind {
 /// The `rays` command (session 6: the hierarchy).
 pub const VERB: Verb = Verb {
     rank: 8,
-    session: 6,
     command: <RaysArgs as clap::CommandFactory>::command,
     run,
 };

@@ -22,7 +22,6 @@ struct RenderFile {
 /// The `render` command.
 pub const VERB: Verb = Verb {
     rank: 2,
-    session: 1,
     command: <RenderFile as clap::CommandFactory>::command,
     run,
 };

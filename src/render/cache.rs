@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::maths::{Colour, Real, to_double};
 use crate::render::Film;
 use crate::render::write_atomically;
+use crate::scene::Scene;
 
 /// The first line of a reference file.
 const MAGIC: &[u8] = b"raycourse reference 1\n";
@@ -60,6 +61,35 @@ pub fn save_reference(path: &Path, film: &Film) -> std::io::Result<()> {
     write_atomically(path, &bytes)
 }
 
+/// The film of `scene` from the folder of references `dir`, if it was rendered
+/// before, else rendered by `render` (which tells `progress` its work as it goes)
+/// and kept there. `text` is the scene file's text, edits included: with the
+/// size, the samples and the seed it names the file, so that any change renders
+/// anew. A film read from `dir` tells `progress` all its work at once. The second
+/// value says whether the film could be kept: a folder that cannot be written only
+/// costs time on the next run, so the caller decides what to say.
+pub fn cached_render(
+    dir: &Path,
+    text: &str,
+    scene: &Scene,
+    progress: &(dyn Fn(u64) + Sync),
+    render: impl FnOnce(&(dyn Fn(u64) + Sync)) -> Film,
+) -> (Film, std::io::Result<()>) {
+    let (camera, settings) = (scene.camera, scene.settings);
+    let key = format!(
+        "{text}\n{}x{}, {} spp, seed {}",
+        camera.width, camera.height, settings.samples, settings.seed
+    );
+    let path = reference_path(dir, &key);
+    if let Some(film) = load_reference(&path) {
+        progress(u64::from(camera.height) * u64::from(settings.samples));
+        return (film, Ok(()));
+    }
+    let film = render(progress);
+    let saved = save_reference(&path, &film);
+    (film, saved)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -85,6 +115,44 @@ mod tests {
             None,
             "a truncated file is not a reference"
         );
+    }
+
+    #[test]
+    fn a_render_is_kept_and_read_back_with_its_work_told_at_once() {
+        let dir = tempfile::tempdir().unwrap();
+        let mut scene = Scene::default();
+        scene.camera.width = 2;
+        scene.camera.height = 1;
+        scene.settings.samples = 3;
+        let film = Film {
+            width: 2,
+            height: 1,
+            pixels: vec![Colour::new(0.25, 0.5, 1.0), Colour::ZERO],
+        };
+        let told = std::sync::atomic::AtomicU64::new(0);
+        let progress = |n| {
+            told.fetch_add(n, std::sync::atomic::Ordering::Relaxed);
+        };
+        let (first, saved) = cached_render(dir.path(), "a", &scene, &progress, |_| film.clone());
+        assert!(saved.is_ok() && first == film);
+        assert_eq!(told.load(std::sync::atomic::Ordering::Relaxed), 0);
+        let (again, _) = cached_render(dir.path(), "a", &scene, &progress, |_| unreachable!());
+        assert_eq!(again, film);
+        assert_eq!(
+            told.load(std::sync::atomic::Ordering::Relaxed),
+            3,
+            "1 row x 3 samples"
+        );
+        let (other, _) = cached_render(dir.path(), "b", &scene, &progress, |_| Film {
+            pixels: vec![Colour::ONE; 2],
+            ..film.clone()
+        });
+        assert_ne!(other, film, "another text is another file");
+        // Under a file, the folder cannot be made: the film comes back with the error.
+        let file = dir.path().join("file");
+        std::fs::write(&file, "").unwrap();
+        let (kept, saved) = cached_render(&file, "a", &scene, &progress, |_| film.clone());
+        assert!(kept == film && saved.is_err());
     }
 
     #[test]

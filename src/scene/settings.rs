@@ -4,9 +4,6 @@ use smart_default::SmartDefault;
 
 use crate::maths::Real;
 
-#[cfg(feature = "beyond")]
-use crate::scene::beyond::Beyond;
-
 // ANCHOR: settings
 /// How a scene is rendered. Every setting is read from the scene file; the later
 /// ones keep the course's first choices unless a scene asks for more. By default:
@@ -44,6 +41,6 @@ pub struct Settings {
     /// What a render uses beyond the course: another sampler, adaptive sampling,
     /// the fast engine.
     #[cfg(feature = "beyond")]
-    pub beyond: Beyond,
+    pub beyond: crate::scene::beyond::Beyond,
 }
 // ANCHOR_END: settings
