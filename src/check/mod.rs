@@ -13,10 +13,13 @@
 //! | [`report`] | the verdict, the figures behind it and the hint |
 //! | [`language`] | English or French, as the locale or `--lang` asks (the checklist's too) |
 //! | [`wording`] | the report in words, as `check` prints it |
+//! | [`grading`] | a student's folder or a class graded, and the grading sheet |
 
 pub mod compare;
 #[cfg(feature = "s7")]
 pub mod expected;
+#[cfg(feature = "s7")]
+pub mod grading;
 pub mod language;
 #[cfg(feature = "s7")]
 pub mod mistakes;

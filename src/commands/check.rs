@@ -9,6 +9,9 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 use image::RgbImage;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::check::expected::Source;
+use raycourse::check::grading::{
+    Grade, class_sheet, folder_sheet, grade_folder, image_of_any_stage, students,
+};
 use raycourse::check::language::Language;
 use raycourse::check::report::{Report, Verdict, check};
 use raycourse::{Stage, stages};
@@ -159,7 +162,7 @@ fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
     if !dir.is_dir() {
         return Err(Failure::Input(format!("{}: not a folder", dir.display())));
     }
-    let students = students(dir)?;
+    let students = students(dir).map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
     if image_of_any_stage(dir).is_none() {
         if students.iter().all(|s| image_of_any_stage(s).is_none()) {
             return Err(Failure::Input(format!(
@@ -170,126 +173,69 @@ fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
         }
         return grade_class(args, dir, &students);
     }
-    let rows = grade_folder(args, dir)?;
-    let mut csv =
-        String::from("stage,session,figure,verdict,differing,red,green,blue,noise,hint\n");
+    let language = args.language();
+    let grades = grade_folder(dir, |stage, path| check_image(args, stage, path))?;
     println!("{:<17} {:<10} hint", "stage", "verdict");
-    for (stage, row) in &rows {
-        println!("{:<17} {:<10} {}", stage.name, row.verdict, row.hint);
-        csv += &format!(
-            "{},{},{},{},{}\n",
+    for (stage, grade) in &grades {
+        println!(
+            "{:<17} {:<10} {}",
             stage.name,
-            stage.session,
-            stage.figure.map_or(String::new(), |f| f.to_string()),
-            row.verdict,
-            row.figures
+            grade.word(),
+            grade.hint(language)
         );
     }
-    let sheet = args.csv.clone().unwrap_or_else(|| dir.join("grades.csv"));
-    write(&sheet, csv.as_bytes())?;
-    println!("grading sheet -> {}", sheet.display());
-    finish(rows.iter().all(|(_, row)| row.passes()))
+    write_sheet(args, dir, &folder_sheet(&grades, language))?;
+    finish(grades.iter().all(|(_, grade)| grade.passes()))
 }
 
-/// Grades every student's folder of the class in `dir`: a table of verdicts on the
-/// terminal, and one CSV row per student with, for each stage, the verdict and the
-/// hint.
+/// Grades every student's folder of the class in `dir`: a line per student on the
+/// terminal, and the class's grading sheet.
 fn grade_class(args: &CheckArgs, dir: &Path, students: &[PathBuf]) -> Result<(), Failure> {
-    let mut csv = String::from("student");
-    for stage in stages() {
-        csv += &format!(",{0},{0} hint", stage.name);
-    }
-    csv += "\n";
-    let mut all_pass = true;
+    let mut class = vec![];
     for folder in students {
         let name = folder.file_name().unwrap_or_default().to_string_lossy();
-        let rows = grade_folder(args, folder)?;
-        let matching = rows.iter().filter(|(_, r)| r.verdict == "matches").count();
-        let differing: Vec<&str> = rows
+        let grades = grade_folder(folder, |stage, path| check_image(args, stage, path))?;
+        let matching = grades.iter().filter(|(_, g)| g.word() == "matches").count();
+        let differing: Vec<&str> = grades
             .iter()
-            .filter(|(_, r)| !r.passes())
+            .filter(|(_, g)| !g.passes())
             .map(|(s, _)| s.name)
             .collect();
+        let differing = match differing.is_empty() {
+            true => "none".to_owned(),
+            false => differing.join(", "),
+        };
         println!(
-            "{name:<20} {matching:>2} of {} match; differ: {}",
-            rows.len(),
-            if differing.is_empty() {
-                "none".to_owned()
-            } else {
-                differing.join(", ")
-            }
+            "{name:<20} {matching:>2} of {} match; differ: {differing}",
+            grades.len()
         );
-        csv += &quoted(&name);
-        for (_, row) in &rows {
-            csv += &format!(",{},{}", row.verdict, quoted(&row.hint));
-        }
-        csv += "\n";
-        all_pass &= rows.iter().all(|(_, row)| row.passes());
+        class.push((name.into_owned(), grades));
     }
+    write_sheet(args, dir, &class_sheet(&class, args.language()))?;
+    finish(
+        class
+            .iter()
+            .flat_map(|(_, g)| g)
+            .all(|(_, grade)| grade.passes()),
+    )
+}
+
+/// The grade of the image at `path` of `stage`: unreadable, or checked.
+fn check_image(args: &CheckArgs, stage: &Stage, path: &Path) -> Result<Grade, Failure> {
+    match read_image(path) {
+        Err(failure) => Ok(Grade::Unreadable(failure.to_string())),
+        Ok(image) => Ok(Grade::Checked(Box::new(check_one(
+            args, stage, &image, path,
+        )?))),
+    }
+}
+
+/// Writes the grading sheet `csv` (`--csv`, or `grades.csv` in `dir`) and says where.
+fn write_sheet(args: &CheckArgs, dir: &Path, csv: &str) -> Result<(), Failure> {
     let sheet = args.csv.clone().unwrap_or_else(|| dir.join("grades.csv"));
     write(&sheet, csv.as_bytes())?;
     println!("grading sheet -> {}", sheet.display());
-    finish(all_pass)
-}
-
-/// Each stage of the build with the row of its image in `dir`.
-fn grade_folder(args: &CheckArgs, dir: &Path) -> Result<Vec<(&'static Stage, Row)>, Failure> {
-    let language = args.language();
-    let mut rows = vec![];
-    for stage in stages() {
-        let row = match image_of(dir, stage) {
-            None => Row::missing(),
-            Some(path) => match read_image(&path) {
-                Err(failure) => Row::unreadable(failure),
-                Ok(image) => Row::of(&check_one(args, stage, &image, &path)?, language),
-            },
-        };
-        rows.push((stage, row));
-    }
-    Ok(rows)
-}
-
-/// The image of `stage` in `dir`: `glass.png`, `glass.jpg` or `glass.jpeg`.
-fn image_of(dir: &Path, stage: &Stage) -> Option<PathBuf> {
-    ["png", "jpg", "jpeg"]
-        .iter()
-        .map(|e| dir.join(format!("{}.{e}", stage.name)))
-        .find(|p| p.exists())
-}
-
-/// The image of any stage in `dir`, if there is one.
-fn image_of_any_stage(dir: &Path) -> Option<PathBuf> {
-    stages().find_map(|stage| image_of(dir, stage))
-}
-
-/// The students' folders of a class folder, sorted by name.
-fn students(dir: &Path) -> Result<Vec<PathBuf>, Failure> {
-    let entries =
-        std::fs::read_dir(dir).map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
-    let mut folders: Vec<PathBuf> = entries
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_dir() && p.file_name().is_some_and(|n| n != "reference"))
-        .collect();
-    folders.sort();
-    Ok(folders)
-}
-
-/// A CSV field: in quotes when it holds a comma, a quote or a line break; and, when
-/// it begins as a spreadsheet formula does (`=`, `+`, `-`, `@`, a tab or a carriage
-/// return), after a `'`, so that a spreadsheet shows it as text rather than run it
-/// (OWASP's advice against CSV injection): a student's folder may be named
-/// `=HYPERLINK(...)`.
-fn quoted(text: &str) -> String {
-    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) {
-        format!("'{text}")
-    } else {
-        text.to_owned()
-    };
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text
-    }
+    Ok(())
 }
 
 /// Success when every image passed; exit code 1 otherwise.
@@ -298,63 +244,5 @@ fn finish(all_pass: bool) -> Result<(), Failure> {
         Ok(())
     } else {
         Err(Failure::Differs)
-    }
-}
-
-/// One row of the grading sheet.
-struct Row {
-    verdict: &'static str,
-    hint: String,
-    /// The CSV columns after the verdict.
-    figures: String,
-}
-
-impl Row {
-    /// Whether the row does not count against the student: a matching image, or none.
-    fn passes(&self) -> bool {
-        self.verdict == "matches" || self.verdict == "missing"
-    }
-
-    /// No image of the stage in the folder.
-    fn missing() -> Row {
-        Row {
-            verdict: "missing",
-            hint: String::new(),
-            figures: ",,,,,".into(),
-        }
-    }
-
-    /// An image that cannot be read.
-    fn unreadable(failure: Failure) -> Row {
-        let hint = failure.to_string();
-        Row {
-            verdict: "unreadable",
-            figures: format!(",,,,,{}", quoted(&hint)),
-            hint,
-        }
-    }
-
-    /// The row of a checked image, its hint named in `language`.
-    fn of(report: &Report, language: Language) -> Row {
-        let verdict = match report.verdict {
-            Verdict::Matches => "matches",
-            Verdict::Differs => "differs",
-        };
-        let hint = report
-            .hint
-            .map_or(String::new(), |m| m.words(language)[0].to_owned());
-        let [r, g, b] = report.ratio;
-        let noise = report
-            .noise
-            .map_or(String::new(), |(n, _)| format!("{n:.3}"));
-        let figures = format!(
-            "{:.4},{r:.4},{g:.4},{b:.4},{noise},{hint}",
-            report.outcome.share()
-        );
-        Row {
-            verdict,
-            hint,
-            figures,
-        }
     }
 }

@@ -1,0 +1,199 @@
+//! Grading a student's folder of images, or a class of students' folders: a grade
+//! for each stage of the build, and the grading sheet a teacher opens in a
+//! spreadsheet.
+
+use std::path::{Path, PathBuf};
+
+use crate::check::language::Language;
+use crate::check::report::{Report, Verdict};
+use crate::scene_file::{Stage, stages};
+
+/// A stage's grade in a student's folder.
+#[derive(Clone, Debug)]
+pub enum Grade {
+    /// No image of the stage in the folder: it does not count against the student.
+    Missing,
+    /// An image that cannot be read, and why.
+    Unreadable(String),
+    /// An image the checker compared with the stage's, and its report.
+    Checked(Box<Report>),
+}
+
+impl Grade {
+    /// Its word in the sheet: `missing`, `unreadable`, `matches` or `differs`.
+    pub fn word(&self) -> &'static str {
+        match self {
+            Grade::Missing => "missing",
+            Grade::Unreadable(_) => "unreadable",
+            Grade::Checked(report) if report.verdict == Verdict::Matches => "matches",
+            Grade::Checked(_) => "differs",
+        }
+    }
+
+    /// Whether it does not count against the student: a matching image, or none.
+    pub fn passes(&self) -> bool {
+        matches!(self, Grade::Missing) || self.word() == "matches"
+    }
+
+    /// The hint: the likely mistake, named in `language`, or why the image cannot be
+    /// read; empty when there is none.
+    pub fn hint(&self, language: Language) -> String {
+        match self {
+            Grade::Missing => String::new(),
+            Grade::Unreadable(why) => why.clone(),
+            Grade::Checked(report) => report
+                .hint
+                .map_or(String::new(), |m| m.words(language)[0].to_owned()),
+        }
+    }
+
+    /// The sheet's figures of a checked image: the share that differs, the
+    /// brightness over the stage's per channel and the noise; empty cells otherwise.
+    fn figures(&self) -> [String; 5] {
+        let Grade::Checked(report) = self else {
+            return Default::default();
+        };
+        let [r, g, b] = report.ratio.map(|c| format!("{c:.4}"));
+        let noise = report
+            .noise
+            .map_or(String::new(), |(n, _)| format!("{n:.3}"));
+        [format!("{:.4}", report.outcome.share()), r, g, b, noise]
+    }
+}
+
+/// The image of `stage` in `dir`: `glass.png`, `glass.jpg` or `glass.jpeg`.
+pub fn image_of(dir: &Path, stage: &Stage) -> Option<PathBuf> {
+    ["png", "jpg", "jpeg"]
+        .iter()
+        .map(|e| dir.join(format!("{}.{e}", stage.name)))
+        .find(|p| p.exists())
+}
+
+/// The image of any stage of the build in `dir`, if there is one.
+pub fn image_of_any_stage(dir: &Path) -> Option<PathBuf> {
+    stages().find_map(|stage| image_of(dir, stage))
+}
+
+/// The students' folders of a class folder, sorted by name (a `reference` folder
+/// of cached references aside).
+pub fn students(dir: &Path) -> std::io::Result<Vec<PathBuf>> {
+    let mut folders: Vec<PathBuf> = std::fs::read_dir(dir)?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.is_dir() && p.file_name().is_some_and(|n| n != "reference"))
+        .collect();
+    folders.sort();
+    Ok(folders)
+}
+
+/// Each stage of the build with its grade in `dir`: [`Grade::Missing`] where the
+/// folder has no image of it, otherwise what `grade` says of the image's path.
+pub fn grade_folder<E>(
+    dir: &Path,
+    mut grade: impl FnMut(&'static Stage, &Path) -> Result<Grade, E>,
+) -> Result<Vec<(&'static Stage, Grade)>, E> {
+    stages()
+        .map(|stage| match image_of(dir, stage) {
+            None => Ok((stage, Grade::Missing)),
+            Some(path) => grade(stage, &path).map(|g| (stage, g)),
+        })
+        .collect()
+}
+
+/// The grading sheet of one folder: a row per stage with its session, figure,
+/// verdict, figures and hint.
+pub fn folder_sheet(grades: &[(&Stage, Grade)], language: Language) -> String {
+    let mut csv =
+        String::from("stage,session,figure,verdict,differing,red,green,blue,noise,hint\n");
+    for (stage, grade) in grades {
+        let figure = stage.figure.map_or(String::new(), |f| f.to_string());
+        let mut cells = vec![stage.name.to_owned(), stage.session.to_string(), figure];
+        cells.push(grade.word().to_owned());
+        cells.extend(grade.figures());
+        cells.push(grade.hint(language));
+        csv += &row(&cells);
+    }
+    csv
+}
+
+/// The grading sheet of a class: a row per student (`class` holds each one's name
+/// and grades), with each stage's verdict and hint.
+pub fn class_sheet(class: &[(String, Vec<(&Stage, Grade)>)], language: Language) -> String {
+    let mut header = vec!["student".to_owned()];
+    for stage in stages() {
+        header.extend([stage.name.to_owned(), format!("{} hint", stage.name)]);
+    }
+    let mut csv = row(&header);
+    for (student, grades) in class {
+        let mut cells = vec![student.clone()];
+        for (_, grade) in grades {
+            cells.extend([grade.word().to_owned(), grade.hint(language)]);
+        }
+        csv += &row(&cells);
+    }
+    csv
+}
+
+/// A line of CSV: the cells, each [`quoted`], separated by commas.
+fn row(cells: &[String]) -> String {
+    let cells: Vec<String> = cells.iter().map(|c| quoted(c)).collect();
+    cells.join(",") + "\n"
+}
+
+/// A CSV field: in quotes when it holds a comma, a quote or a line break; and, when
+/// it begins as a spreadsheet formula does (`=`, `+`, `-`, `@`, a tab or a carriage
+/// return), after a `'`, so that a spreadsheet shows it as text rather than run it
+/// (OWASP's advice against CSV injection): a student's folder may be named
+/// `=HYPERLINK(...)`.
+pub fn quoted(text: &str) -> String {
+    let text = if text.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        format!("'{text}")
+    } else {
+        text.to_owned()
+    };
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cell_is_quoted_where_it_must_be_and_a_formula_is_text() {
+        assert_eq!(quoted("glass"), "glass");
+        assert_eq!(quoted("a, b"), "\"a, b\"");
+        assert_eq!(quoted("say \"hi\""), "\"say \"\"hi\"\"\"");
+        assert_eq!(quoted("=HYPERLINK(\"x\")"), "\"'=HYPERLINK(\"\"x\"\")\"");
+        assert_eq!(quoted("-1"), "'-1");
+    }
+
+    #[test]
+    fn every_row_of_a_sheet_has_the_header_s_cells_whatever_its_hint() {
+        let stage = stages().next().unwrap();
+        let grades = [
+            (stage, Grade::Missing),
+            (
+                stage,
+                Grade::Unreadable("x.png: not an image, or a PNG, or a JPEG".into()),
+            ),
+        ];
+        let sheet = folder_sheet(&grades, Language::English);
+        let lines: Vec<&str> = sheet.lines().collect();
+        assert_eq!(lines.len(), 3);
+        assert_eq!(lines[1], format!("{},1,1,missing,,,,,,", stage.name));
+        assert!(lines[2].ends_with(",\"x.png: not an image, or a PNG, or a JPEG\""));
+        let class = [("=cmd".to_owned(), grades.to_vec())];
+        let sheet = class_sheet(&class, Language::English);
+        assert!(
+            sheet
+                .lines()
+                .nth(1)
+                .unwrap()
+                .starts_with("'=cmd,missing,,unreadable,")
+        );
+        assert!(!grades[1].1.passes() && grades[0].1.passes());
+    }
+}
