@@ -93,10 +93,7 @@ pub fn fast_columns(
     let scene = stage.scene(&fast)?;
     let fast = timed_render(stage.name, &scene, options)?;
     if fast.result.film != course.result.film {
-        return Err(Failure::Machine(format!(
-            "{}: the fast engine's image differs from the course's code's",
-            stage.name
-        )));
+        return Err(differs(stage));
     }
     let speed_up = course.seconds / fast.seconds;
     Ok(format!(" {:.2} s | {speed_up:.2}x |", fast.seconds))
@@ -124,9 +121,15 @@ pub fn same_bytes_by_the_fast_engine(
     std::fs::remove_file(&fast).map_err(|e| Failure::write(&fast, e))?;
     match same {
         true => Ok(()),
-        false => Err(Failure::Machine(format!(
-            "{}: the fast engine's image differs from the course's code's",
-            stage.name
-        ))),
+        false => Err(differs(stage)),
     }
+}
+
+/// The failure of a fast engine whose image of `stage` is not the course's: a bug
+/// of the machine, since the two must give the same bytes.
+fn differs(stage: &Stage) -> Failure {
+    Failure::Machine(format!(
+        "{}: the fast engine's image differs from the course's code's",
+        stage.name
+    ))
 }
