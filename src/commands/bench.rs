@@ -32,19 +32,6 @@ pub const VERB: Verb = Verb {
 
 inventory::submit! { VERB }
 
-/// The time the course reported for the stage of figure `figure` on its own machine.
-fn course_time(figure: Option<u32>) -> &'static str {
-    match figure {
-        Some(1..=7) => "under 1 s",
-        Some(8..=9) => "under 10 s",
-        Some(11) => "about 15 s",
-        Some(13) => "35 s",
-        Some(14) => "15 s",
-        Some(15..=18) => "about 60 s",
-        _ => "-",
-    }
-}
-
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = BenchArgs::from_arg_matches(matches)?;
     let options = RenderArgs {
@@ -82,6 +69,6 @@ fn row(stage: &Stage, scene: &Scene, course: &Timed) -> String {
         course.seconds,
         course.result.rays,
         course.result.rays as f64 / course.seconds / 1e6,
-        course_time(stage.figure)
+        stage.course_time.unwrap_or("-")
     )
 }

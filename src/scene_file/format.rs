@@ -20,6 +20,9 @@ pub const MAX_PIXELS: u64 = 8192 * 8192;
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneFile {
+    /// The `[stage]` table of a course stage's file: what the stage is. A render
+    /// does not use it.
+    pub stage: Option<StageSpec>,
     /// The `[render]` table.
     pub render: RenderSpec,
     /// The `[camera]` table.
@@ -32,6 +35,19 @@ pub struct SceneFile {
     /// The `[[meshes]]` array (session 5).
     #[serde(default)]
     pub meshes: Vec<MeshSpec>,
+}
+
+/// `[stage]`: what a course stage's scene file says of itself, read by the build
+/// script (`build.rs`) into the list of stages and by `bench` and `list`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StageSpec {
+    /// The figure of the course it reproduces (absent: an extra stage).
+    pub figure: Option<u32>,
+    /// What the stage adds, in a few words.
+    pub title: String,
+    /// The time the course reported for it on its own machine, such as `35 s`.
+    pub course_time: Option<String>,
 }
 
 /// One `[[meshes]]` entry: an OBJ file placed in the scene,

@@ -21,113 +21,18 @@ pub struct Stage {
     pub name: &'static str,
     /// What the stage adds, in a few words.
     pub title: &'static str,
+    /// The time the course reported for it on its own machine, where it did.
+    pub course_time: Option<&'static str>,
     /// The scene file's path in the repository.
     pub path: &'static str,
     /// The scene file's text.
     pub source: &'static str,
 }
 
-macro_rules! stage {
-    ($session:literal, $figure:expr, $name:literal, $title:literal) => {
-        Stage {
-            session: $session,
-            figure: $figure,
-            name: $name,
-            title: $title,
-            path: concat!("sessions/s", $session, "/", $name, ".toml"),
-            source: include_str!(concat!("../../sessions/s", $session, "/", $name, ".toml")),
-        }
-    };
-}
-
-/// Every stage of the course written so far, in course order.
-const ALL: &[Stage] = &[
-    stage!(
-        1,
-        Some(1),
-        "white-disk",
-        "camera rays and a sphere: white where hit"
-    ),
-    stage!(1, Some(2), "shading", "Lambert shading under a point light"),
-    stage!(
-        1,
-        Some(3),
-        "spheres",
-        "several spheres, the nearest hit wins"
-    ),
-    stage!(2, Some(4), "gamma", "gamma correction"),
-    stage!(2, Some(5), "shadows", "shadow rays"),
-    stage!(2, Some(6), "mirror", "a mirror sphere: recursive radiance"),
-    stage!(
-        2,
-        Some(7),
-        "glass",
-        "glass: refraction, total internal reflection"
-    ),
-    stage!(
-        3,
-        Some(8),
-        "indirect",
-        "indirect lighting by Monte Carlo path tracing"
-    ),
-    stage!(
-        3,
-        Some(9),
-        "antialiasing",
-        "Gaussian jitter of camera rays (Box-Muller)"
-    ),
-    stage!(
-        4,
-        Some(10),
-        "soft-shadows",
-        "a sphere light found by indirect rays only"
-    ),
-    stage!(
-        4,
-        Some(11),
-        "light-sampling",
-        "direct light by sampling the light sphere"
-    ),
-    stage!(
-        4,
-        Some(12),
-        "depth-of-field",
-        "a thin lens: aperture and focus distance"
-    ),
-    stage!(4, None, "fresnel", "extra: glass with Fresnel reflection"),
-    stage!(
-        4,
-        None,
-        "russian-roulette",
-        "extra: Russian roulette past the bounce limit"
-    ),
-    stage!(
-        5,
-        Some(13),
-        "mesh",
-        "a triangle mesh from an OBJ file, brute force"
-    ),
-    stage!(
-        5,
-        Some(14),
-        "mesh-bbox",
-        "the mesh's bounding box tested first"
-    ),
-    stage!(6, Some(15), "bvh", "a bounding volume hierarchy"),
-    stage!(6, Some(16), "smooth-normals", "interpolated vertex normals"),
-    stage!(
-        7,
-        Some(17),
-        "textures",
-        "texture coordinates and texture lookup"
-    ),
-    stage!(
-        7,
-        Some(18),
-        "camera",
-        "a camera placed and aimed: the plunging view"
-    ),
-];
+/// Every stage of the course written so far, in course order: one for each scene
+/// file of `sessions/sN/`, as the build script (`build.rs`) reads its `[stage]`
+/// table.
+const ALL: &[Stage] = include!(concat!(env!("OUT_DIR"), "/stages.rs"));
 
 /// The stages of this build: those of the sessions its features enable.
 pub fn stages() -> impl Iterator<Item = &'static Stage> {

@@ -11,6 +11,7 @@ use raycourse::stages;
 
 use crate::images;
 use crate::known::Outcome;
+use crate::marker::{MarkerLine, parse_marker};
 use crate::say;
 use crate::words::french;
 
@@ -32,14 +33,6 @@ pub struct Exercise {
     /// What it computes and the French book's section, for the checklist in French:
     /// `["la distance rayon-sphère", "séance 1, « Un disque blanc »"]`.
     pub french: [&'static str; 2],
-}
-
-/// An exercise's marker, read from the source: `/// Exercise s1.2, what: book ...`.
-struct Marker {
-    /// What it computes.
-    title: String,
-    /// Where the book teaches it.
-    book: String,
 }
 
 /// A line's verdict.
@@ -153,7 +146,7 @@ fn check_stages(
     session: u32,
     exercises: &[Exercise],
     chosen: &dyn Fn(&str) -> bool,
-    markers: &HashMap<String, Marker>,
+    markers: &HashMap<String, MarkerLine>,
     (verdicts, below): (&HashMap<&str, Verdict>, &[&str]),
 ) -> (u32, u32, Option<String>) {
     let (mut passed, mut failed, mut differing) = (0, 0, None);
@@ -215,7 +208,7 @@ fn look_again(
     verdict: &Verdict,
     earlier: &HashMap<&str, Verdict>,
     used: &[&str],
-    markers: &HashMap<String, Marker>,
+    markers: &HashMap<String, MarkerLine>,
 ) -> Option<String> {
     let all_pass = earlier.values().all(|v| *v == Verdict::Passed);
     if !matches!(verdict, Verdict::Failed(_)) || !all_pass || used.is_empty() {
@@ -291,7 +284,7 @@ fn report(
     name: &str,
     verdict: &Verdict,
     exercise: Option<&Exercise>,
-    markers: &HashMap<String, Marker>,
+    markers: &HashMap<String, MarkerLine>,
     earlier: &HashMap<&str, Verdict>,
 ) {
     let failed_line = || println!("{name} ... {}", say!("FAILED", "ÉCHEC"));
@@ -373,7 +366,7 @@ fn report(
 
 /// `s1.2, the ray-sphere distance (book session 1, "A white disk")`, or the number
 /// alone where no marker names it (a function a later session replaced).
-fn describe(id: &str, markers: &HashMap<String, Marker>) -> String {
+fn describe(id: &str, markers: &HashMap<String, MarkerLine>) -> String {
     match markers.get(id) {
         Some(m) => format!("{id}, {} ({})", m.title, m.book),
         None => id.to_owned(),
@@ -383,13 +376,14 @@ fn describe(id: &str, markers: &HashMap<String, Marker>) -> String {
 /// The markers in the checklist's language: in French, each exercise's title and
 /// section as its `french` field gives them.
 fn in_language(
-    mut markers: HashMap<String, Marker>,
+    mut markers: HashMap<String, MarkerLine>,
     sessions: &[&[Exercise]],
-) -> HashMap<String, Marker> {
+) -> HashMap<String, MarkerLine> {
     if french() {
         for e in sessions.iter().flat_map(|s| s.iter()) {
             let [title, section] = e.french;
-            let marker = Marker {
+            let marker = MarkerLine {
+                id: e.id.to_owned(),
                 title: title.to_owned(),
                 book: format!("livre, {section}"),
             };
@@ -413,18 +407,16 @@ fn quiet_panics() {
 
 /// The markers in the crate's sources, by exercise number, with the function each
 /// marks (`Sphere::intersect`).
-fn markers() -> HashMap<String, Marker> {
-    let mut markers = HashMap::new();
-    for (id, title, book) in
-        marker_lines(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src"))
-    {
-        markers.insert(id, Marker { title, book });
-    }
-    markers
+fn markers() -> HashMap<String, MarkerLine> {
+    let folder = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    marker_lines(&folder)
+        .into_iter()
+        .map(|marker| (marker.id.clone(), marker))
+        .collect()
 }
 
-/// `(number, title, book)` of every marker line below `folder`.
-fn marker_lines(folder: &std::path::Path) -> Vec<(String, String, String)> {
+/// Every marker line below `folder`.
+fn marker_lines(folder: &std::path::Path) -> Vec<MarkerLine> {
     let mut found = vec![];
     for entry in std::fs::read_dir(folder).into_iter().flatten().flatten() {
         let path = entry.path();
@@ -432,30 +424,20 @@ fn marker_lines(folder: &std::path::Path) -> Vec<(String, String, String)> {
             found.extend(marker_lines(&path));
         } else if path.extension().is_some_and(|e| e == "rs") {
             let text = std::fs::read_to_string(&path).unwrap_or_default();
-            found.extend(text.lines().filter_map(parse_marker));
+            found.extend(
+                text.lines()
+                    .filter_map(|line| parse_marker(line.trim().strip_prefix("///")?)),
+            );
         }
     }
     found
-}
-
-/// The marker in a line such as
-/// `/// Exercise s1.2, the ray-sphere distance: book session 1, "A white disk".`
-fn parse_marker(line: &str) -> Option<(String, String, String)> {
-    let rest = line.trim().strip_prefix("/// Exercise ")?;
-    let (id, rest) = rest.split_once(", ")?;
-    let (title, book) = rest.split_once(": ")?;
-    Some((
-        id.to_owned(),
-        title.to_owned(),
-        book.trim_end_matches('.').to_owned(),
-    ))
 }
 
 /// What is wrong between the markers and the checklist: a marker without an
 /// exercise here (a later session's marker aside: session 2's gamma is written in
 /// session 2, on a function that exists from session 1), or an exercise named after
 /// another number.
-fn unmarked(sessions: &[&[Exercise]], markers: &HashMap<String, Marker>) -> String {
+fn unmarked(sessions: &[&[Exercise]], markers: &HashMap<String, MarkerLine>) -> String {
     let mut wrong = vec![];
     let later = |id: &str| {
         let session: usize = id[1..]

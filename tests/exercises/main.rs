@@ -19,6 +19,7 @@
 mod checklist;
 mod images;
 mod known;
+mod marker;
 mod s1;
 #[cfg(feature = "s2")]
 mod s2;

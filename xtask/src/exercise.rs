@@ -18,10 +18,8 @@ use syn::spanned::Spanned;
 use syn::visit::{self, Visit};
 use syn::{Attribute, Block, Expr, Lit, Meta};
 
+use crate::marker::{MarkerLine, parse_marker};
 use crate::source::Source;
-
-/// The words that start a marker line in a doc comment.
-const MARKER: &str = "Exercise s";
 
 /// An exercise, as its marker names it.
 #[derive(Clone, Debug, PartialEq)]
@@ -41,15 +39,13 @@ pub struct Marker {
 impl Marker {
     /// The marker in a doc line (its text after `///`), if it is one.
     pub fn parse(line: &str) -> Option<Marker> {
-        let rest = line.trim().strip_prefix(MARKER)?;
-        let (id, rest) = rest.split_once(", ")?;
-        let (title, book) = rest.split_once(": ")?;
-        let session = id.split('.').next()?.parse().ok()?;
+        let MarkerLine { id, title, book } = parse_marker(line)?;
+        let session = id.strip_prefix('s')?.split('.').next()?.parse().ok()?;
         Some(Marker {
-            id: format!("s{id}"),
+            id,
             session,
-            title: title.to_owned(),
-            book: book.trim_end_matches('.').to_owned(),
+            title,
+            book,
             function: String::new(),
         })
     }

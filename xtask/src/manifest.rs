@@ -10,10 +10,8 @@ use crate::cfg::session_of;
 /// default features; dependencies that a session brings (`dep:tobj`) plain when
 /// the view has that session, absent otherwise (those beyond the course always); a workspace of its own (an empty
 /// `[workspace]` table, so that the view builds wherever it is written, even
-/// inside this repository's `target/`); benches and examples
-/// that need a later session left out, the others without their session
-/// requirement. Also returns the names of the targets left out.
-pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), String> {
+/// inside this repository's `target/`).
+pub fn view_manifest(text: &str, session: u32) -> Result<String, String> {
     let mut doc: DocumentMut = text.parse().map_err(|e| format!("Cargo.toml: {e}"))?;
     doc["workspace"] = toml_edit::table();
     let version = doc["package"]["version"]
@@ -23,10 +21,11 @@ pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), 
     doc["package"]["version"] = toml_edit::value(format!("{version}-s{session}"));
     let mut brought = vec![];
     if let Some(features) = doc.get_mut("features").and_then(Item::as_table_mut) {
-        for (n, name) in (1..=7u32)
-            .map(|n| (n, format!("s{n}")))
-            .chain([(8, "beyond".into())])
-        {
+        let named: Vec<(u32, String)> = features
+            .iter()
+            .filter_map(|(name, _)| session_of(name).map(|n| (n, name.to_owned())))
+            .collect();
+        for (n, name) in named {
             let deps: Vec<String> = features
                 .get(&name)
                 .and_then(Item::as_array)
@@ -57,46 +56,7 @@ pub fn view_manifest(text: &str, session: u32) -> Result<(String, Vec<String>), 
             }
         }
     }
-    let mut dropped = vec![];
-    for kind in ["bench", "example"] {
-        let Some(targets) = doc.get_mut(kind).and_then(Item::as_array_of_tables_mut) else {
-            continue;
-        };
-        targets.retain(|target| {
-            let needs = target
-                .get("required-features")
-                .and_then(Item::as_array)
-                .map(|a| {
-                    a.iter()
-                        .filter_map(Value::as_str)
-                        .filter_map(session_of)
-                        .max()
-                });
-            let keep = needs.flatten().is_none_or(|n| n <= session);
-            if !keep {
-                dropped.push(
-                    target
-                        .get("name")
-                        .and_then(Item::as_str)
-                        .unwrap_or("")
-                        .to_owned(),
-                );
-            }
-            keep
-        });
-        for target in targets.iter_mut() {
-            if let Some(required) = target
-                .get_mut("required-features")
-                .and_then(Item::as_array_mut)
-            {
-                required.retain(|v| v.as_str().and_then(session_of).is_none());
-                if required.is_empty() {
-                    target.remove("required-features");
-                }
-            }
-        }
-    }
-    Ok((doc.to_string(), dropped))
+    Ok(doc.to_string())
 }
 
 #[cfg(test)]
@@ -122,47 +82,32 @@ f32 = []
 glam = "0.30"
 tobj = { version = "4", optional = true }
 wide = { version = "1", optional = true }
-
-[[bench]]
-name = "bvh"
-required-features = ["s5"]
-
-[[bench]]
-name = "render"
-
-[[bench]]
-name = "peers"
-required-features = ["beyond"]
 "#;
 
     #[test]
     fn a_view_has_no_session_feature_and_a_workspace_of_its_own() {
-        let (text, dropped) = view_manifest(MANIFEST, 4).unwrap();
+        let text = view_manifest(MANIFEST, 4).unwrap();
         let doc: toml_edit::DocumentMut = text.parse().unwrap();
         assert!(doc["workspace"].as_table().unwrap().is_empty());
         assert_eq!(doc["package"]["version"].as_str(), Some("0.1.0-s4"));
         let features = doc["features"].as_table().unwrap();
         assert_eq!(features.iter().map(|(k, _)| k).collect::<Vec<_>>(), ["f32"]);
         assert!(doc["dependencies"].get("tobj").is_none());
-        assert_eq!(dropped, ["bvh", "peers"]);
     }
 
     #[test]
     fn a_dependency_a_held_session_brings_is_plain() {
-        let (text, dropped) = view_manifest(MANIFEST, 5).unwrap();
+        let text = view_manifest(MANIFEST, 5).unwrap();
         let doc: toml_edit::DocumentMut = text.parse().unwrap();
         let tobj = doc["dependencies"]["tobj"].as_inline_table().unwrap();
         assert!(tobj.get("optional").is_none());
-        assert_eq!(dropped, ["peers"]);
-        assert!(!text.contains("required-features"), "{text}");
     }
 
     #[test]
     fn no_view_holds_what_goes_beyond_the_course() {
-        let (text, dropped) = view_manifest(MANIFEST, 7).unwrap();
+        let text = view_manifest(MANIFEST, 7).unwrap();
         let doc: toml_edit::DocumentMut = text.parse().unwrap();
         assert!(doc["features"].get("beyond").is_none(), "{text}");
         assert!(doc["dependencies"].get("wide").is_none(), "{text}");
-        assert_eq!(dropped, ["peers"]);
     }
 }

@@ -316,31 +316,11 @@ impl<'ast> Visit<'ast> for Pruner<'_> {
 
     fn visit_expr_array(&mut self, array: &'ast syn::ExprArray) {
         for element in &array.elems {
-            if let Some(session) = stage_session(element)
-                && session > self.session
-            {
-                let range = self.source.range(element.span());
-                self.edits.push(Edit {
-                    range: self.whole(range, Place::InList),
-                    with: MARK.to_string(),
-                });
-            } else if self.gate(expr_attrs(element), element.span(), Place::InList) {
+            if self.gate(expr_attrs(element), element.span(), Place::InList) {
                 self.visit_expr(element);
             }
         }
     }
-}
-
-/// The session of a stage row `stage!(N, ...)` of the course's table of stages.
-fn stage_session(element: &Expr) -> Option<u32> {
-    let Expr::Macro(call) = element else {
-        return None;
-    };
-    if !call.mac.path.is_ident("stage") {
-        return None;
-    }
-    let first = call.mac.tokens.clone().into_iter().next()?;
-    first.to_string().parse().ok()
 }
 
 /// `text` with the `edits` made (they do not overlap).
@@ -514,16 +494,6 @@ mod tests {
         assert_eq!(
             view(text, 6),
             "// A comment.\nconst S: &str = \"a\n\n\nb\";\n"
-        );
-    }
-
-    #[test]
-    fn a_later_sessions_stage_row_leaves_the_table() {
-        let text = "const STAGES: [u8; 2] = [\n    stage!(1, \"disk\"),\n    stage!(2, \"shading\"),\n];\n";
-        let at1 = view(text, 1);
-        assert!(
-            at1.contains("stage!(1") && !at1.contains("stage!(2"),
-            "{at1}"
         );
     }
 }

@@ -14,12 +14,10 @@ const README_FIRST_LINE: &str = "# raycourse after session";
 /// empty, absent, or an earlier view (replaced).
 pub fn write_view(root: &Path, session: u32, out: &Path) -> Result<(), String> {
     prepare(out)?;
-    let (manifest, dropped) = view_manifest(&read(&root.join("Cargo.toml"))?, session)?;
+    let manifest = view_manifest(&read(&root.join("Cargo.toml"))?, session)?;
     write(&out.join("Cargo.toml"), &manifest)?;
-    for file in ["Cargo.lock", "build.rs", "rustfmt.toml"] {
-        if root.join(file).exists() {
-            copy(&root.join(file), &out.join(file))?;
-        }
+    for file in ["Cargo.lock", "build.rs"] {
+        copy(&root.join(file), &out.join(file))?;
     }
     write(&out.join(".gitignore"), "/target\n/out\n")?;
     for main in ["lib.rs", "main.rs"] {
@@ -33,26 +31,6 @@ pub fn write_view(root: &Path, session: u32, out: &Path) -> Result<(), String> {
     }
     copy_assets(root, out, session)?;
     copy_tests(root, out, session)?;
-    let examples = root.join("examples");
-    let examples = if examples.is_dir() {
-        rust_files(&examples)?
-    } else {
-        vec![]
-    };
-    for file in examples {
-        let name = file
-            .file_stem()
-            .unwrap_or_default()
-            .to_string_lossy()
-            .into_owned();
-        if !dropped.contains(&name) {
-            prune_file(
-                &file,
-                &out.join("examples").join(file.file_name().unwrap()),
-                session,
-            )?;
-        }
-    }
     write(&out.join("README.md"), &readme(session))
 }
 
@@ -119,16 +97,24 @@ fn prune_file(from: &Path, to: &Path, session: u32) -> Result<Option<Vec<String>
     Ok(Some(pruned.modules))
 }
 
-/// Copies the assets the view's scenes and tests use: the font of the plots (from
-/// session 3) and the meshes with their textures (from session 5).
+/// Copies the assets the view's scenes and tests use: the folders that
+/// `assets/sessions.toml` gives to sessions up to `session` (the meshes with their
+/// textures, from session 5).
 fn copy_assets(root: &Path, out: &Path, session: u32) -> Result<(), String> {
     copy(
         &root.join("assets/README.md"),
         &out.join("assets/README.md"),
     )?;
-    let folders: &[(&str, u32)] = &[("fonts", 3), ("spot", 5), ("ogre", 5)];
-    for (folder, from) in folders {
-        if session >= *from {
+    let map = root.join("assets/sessions.toml");
+    let text = std::fs::read_to_string(&map).map_err(|e| format!("{}: {e}", map.display()))?;
+    let folders: toml_edit::DocumentMut = text
+        .parse()
+        .map_err(|e| format!("{}: {e}", map.display()))?;
+    for (folder, from) in folders.iter() {
+        let from = from
+            .as_integer()
+            .ok_or_else(|| format!("{}: `{folder}` should be a session number", map.display()))?;
+        if i64::from(session) >= from {
             copy_folder(
                 &root.join("assets").join(folder),
                 &out.join("assets").join(folder),
@@ -272,4 +258,39 @@ fn copy_folder(from: &Path, to: &Path) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The `.rs` and `.toml` files under `folder`, with their text.
+    fn texts(folder: &Path) -> Vec<(PathBuf, String)> {
+        let mut found = vec![];
+        for path in fs::read_dir(folder).unwrap().map(|e| e.unwrap().path()) {
+            if path.is_dir() {
+                found.extend(texts(&path));
+            } else if path.extension().is_some_and(|e| e == "rs" || e == "toml") {
+                found.push((path.clone(), fs::read_to_string(&path).unwrap()));
+            }
+        }
+        found
+    }
+
+    #[test]
+    fn no_view_keeps_a_session_gate_or_what_goes_beyond_the_course() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let out = std::env::temp_dir().join(format!("raycourse-views-{}", std::process::id()));
+        for session in 1..=7 {
+            let view = out.join(format!("s{session}"));
+            write_view(root, session, &view).unwrap();
+            for (path, text) in texts(&view) {
+                for gate in ["feature = \"s", "feature = \"beyond\"", "mod fast;"] {
+                    assert!(!text.contains(gate), "{}: {gate}", path.display());
+                }
+            }
+            assert!(!view.join("src/fast").exists() && !view.join("assets/fonts").exists());
+        }
+        fs::remove_dir_all(&out).unwrap();
+    }
 }
