@@ -15,7 +15,7 @@ use raycourse::stages;
 
 use commands::failure::Failure;
 use commands::options::RenderArgs;
-use commands::{Verb, stage, verbs};
+use commands::{Verb, pipe, stage, verbs};
 
 /// The command line: the sessions' subcommands `s1` to `sN` of this build, every
 /// other command of this build, and the render options, which apply to the last
@@ -55,7 +55,11 @@ fn dispatch(verbs: &[Verb], matches: &ArgMatches) -> Result<(), Failure> {
 fn main() -> ExitCode {
     let verbs = verbs();
     let matches = command(&verbs).get_matches();
-    match dispatch(&verbs, &matches) {
+    // A reader that closed the output early (`| head`) ends the command quietly.
+    let Some(outcome) = pipe::quiet_when_closed(|| dispatch(&verbs, &matches)) else {
+        return ExitCode::SUCCESS;
+    };
+    match outcome {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::Differs) => Failure::Differs.exit_code(),
         Err(failure) => {

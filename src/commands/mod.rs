@@ -4,6 +4,7 @@
 pub mod failure;
 pub mod options;
 pub mod output;
+pub mod pipe;
 
 pub mod bench;
 pub mod figures;

@@ -335,3 +335,20 @@ fn out_writes_through_a_link_and_refuses_what_is_not_a_file() {
             .is_fifo()
     );
 }
+
+/// A reader that closes the output at once (`raycourse list | head -0`) ends the
+/// command quietly: exit code 0 and no panic on stderr.
+#[test]
+fn a_closed_output_ends_the_command_quietly() {
+    use std::process::{Command, Stdio};
+    let mut child = Command::new(env!("CARGO_BIN_EXE_raycourse"))
+        .arg("list")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert!(out.status.success(), "{:?}", out.status);
+    assert_eq!(text(&out.stderr), "", "nothing on stderr");
+}
