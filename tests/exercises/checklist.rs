@@ -10,6 +10,7 @@ use std::sync::Mutex;
 use raycourse::stages;
 
 use crate::images;
+use crate::isolation;
 use crate::known::Outcome;
 use crate::marker::{MarkerLine, parse_marker};
 use crate::say;
@@ -36,8 +37,8 @@ pub struct Exercise {
 }
 
 /// A line's verdict.
-#[derive(Clone, PartialEq)]
-enum Verdict {
+#[derive(Clone, Debug, PartialEq)]
+pub enum Verdict {
     Passed,
     /// Wrong, with what went wrong.
     Failed(String),
@@ -48,7 +49,6 @@ enum Verdict {
 /// Runs the exercises of `sessions` and their stages' images whose names contain
 /// one of `filters` (all when there is none); success when every line passed.
 pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
-    quiet_panics();
     let markers = markers();
     let unmarked = unmarked(sessions, &markers);
     let markers = in_language(markers, sessions);
@@ -60,7 +60,7 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
         .iter()
         .flat_map(|exercises| exercises.iter())
         .filter(|e| chosen(e.name))
-        .map(|e| (e.id, caught(e.check)))
+        .map(|e| (e.id, isolation::verdict_of(e.name)))
         .collect();
     let mut verdicts: HashMap<&str, Verdict> = HashMap::new();
     let (mut passed, mut failed) = (0, 0);
@@ -157,7 +157,7 @@ fn check_stages(
         if !chosen(&name) {
             continue;
         }
-        let verdict = caught(|| images::check(stage));
+        let verdict = isolation::verdict_of(&name);
         report(&name, &verdict, None, markers, verdicts);
         if verdict == Verdict::Passed {
             passed += 1;
@@ -242,6 +242,25 @@ fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
         ),
     };
     println!("{line}");
+}
+
+/// Runs the line `name` alone, in this process, and prints its verdict for
+/// [`isolation::verdict_of`], which started the process.
+pub fn run_line(sessions: &[&[Exercise]], name: &str) -> ExitCode {
+    quiet_panics();
+    let exercise = sessions
+        .iter()
+        .flat_map(|s| s.iter())
+        .find(|e| e.name == name);
+    let verdict = match exercise {
+        Some(exercise) => caught(exercise.check),
+        None => match stages().find(|s| images::check_name(s) == name) {
+            Some(stage) => caught(|| images::check(stage)),
+            None => return ExitCode::from(2),
+        },
+    };
+    println!("{}", isolation::encode(&verdict));
+    ExitCode::SUCCESS
 }
 
 /// The verdict of `run`: a panic with a stub's message names the stub's exercise.

@@ -18,6 +18,7 @@
 
 mod checklist;
 mod images;
+mod isolation;
 mod known;
 mod marker;
 mod s1;
@@ -55,11 +56,19 @@ const SESSIONS: &[&[checklist::Exercise]] = &[
     s7::EXERCISES,
 ];
 
+/// The memory of the checklist's processes, capped so that a line whose code
+/// allocates for ever ends rather than take the machine's memory.
+#[global_allocator]
+static ALLOCATOR: isolation::Capped = isolation::Capped;
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     if let Err(why) = words::choose(&args) {
         eprintln!("{why}");
         return ExitCode::from(2);
+    }
+    if let Some(at) = args.iter().position(|a| a == isolation::LINE) {
+        return checklist::run_line(SESSIONS, args.get(at + 1).map_or("", String::as_str));
     }
     if args.iter().any(|a| a == "--write-references") {
         return images::write_references();
