@@ -108,6 +108,35 @@ fn pixel_direction() -> Outcome {
             1e-5,
         )?;
     }
+    in_pixel_units()
+}
+
+/// Session 3 adds its antialiasing jitter, in pixels, to this direction, so the
+/// direction is in pixel units: one pixel to the right is one unit along x, one
+/// down one unit along -y, whatever the image's size and field of view (here 8 x 4
+/// and 60 degrees, whose image plane lies at `4 / (2 tan 30) = 3.46`).
+fn in_pixel_units() -> Outcome {
+    let camera = Camera::new(Vec3::ZERO, PI / 3.0, 8, 4);
+    let corner = camera.pixel_direction(0, 0);
+    let steps = [
+        (
+            (0, 1),
+            Vec3::X,
+            ["one pixel to the right", "un pixel à droite"],
+        ),
+        ((1, 0), -Vec3::Y, ["one pixel down", "un pixel plus bas"]),
+    ];
+    for ((row, column), expected, [step, pas]) in steps {
+        close_vec(
+            &say!(
+                "pixel_direction({row}, {column}) - pixel_direction(0, 0), {step} in an 8 x 4 image with a 60-degree field of view (the direction is in pixel units: session 3 adds its jitter, in pixels, to it)",
+                "pixel_direction({row}, {column}) - pixel_direction(0, 0), {pas} dans une image de 8 x 4 avec un champ de vision de 60 degrés (la direction est en unités de pixel\u{a0}: la séance 3 lui ajoute sa perturbation, en pixels)"
+            ),
+            camera.pixel_direction(row, column) - corner,
+            expected,
+            1e-5,
+        )?;
+    }
     Ok(())
 }
 
