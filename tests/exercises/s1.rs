@@ -198,24 +198,59 @@ fn sphere_distance() -> Outcome {
             Some(4.0),
         ),
     ];
-    for ([what, quoi], centre, radius, direction, expected) in cases {
-        let ray = Ray::new(Vec3::ZERO, direction);
-        let gave = sphere(centre, radius).intersect(&ray);
-        let right = same_distance(gave, expected, 1e-4);
-        ensure(right, || {
-            let radius = decimal(radius.to_string());
-            say!(
-                "a sphere of radius {radius} at {} {what}, the ray from {} along {}: gave {}, expected {}",
-                "une sphère de rayon {radius} en {}, {quoi}, le rayon issu de {} selon {}\u{a0}: donne {}, attendu {}",
-                vec(centre),
-                vec(Vec3::ZERO),
-                vec(ray.direction),
-                maybe(gave),
-                maybe(expected)
-            )
-        })?;
+    // Both tests the exercise marks: the textbook's and the renderer's.
+    let tests: [(&str, RaySphere); 2] = [
+        ("Sphere::intersect_textbook", Sphere::intersect_textbook),
+        ("Sphere::intersect", Sphere::intersect),
+    ];
+    for (test, intersect) in tests {
+        for ([what, quoi], centre, radius, direction, expected) in cases {
+            let ray = Ray::new(Vec3::ZERO, direction);
+            let gave = intersect(&sphere(centre, radius), &ray);
+            let right = same_distance(gave, expected, 1e-4);
+            ensure(right, || {
+                let radius = decimal(radius.to_string());
+                say!(
+                    "{test}: a sphere of radius {radius} at {} {what}, the ray from {} along {}: gave {}, expected {}",
+                    "{test}\u{a0}: une sphère de rayon {radius} en {}, {quoi}, le rayon issu de {} selon {}\u{a0}: donne {}, attendu {}",
+                    vec(centre),
+                    vec(Vec3::ZERO),
+                    vec(ray.direction),
+                    maybe(gave),
+                    maybe(expected)
+                )
+            })?;
+        }
     }
-    Ok(())
+    far_sphere()
+}
+
+/// A ray-sphere test: the distance at which the ray meets the sphere, if it does.
+type RaySphere = fn(&Sphere, &Ray) -> Option<Real>;
+
+/// The case the chapter warns of, for the renderer's test alone: a sphere of radius
+/// 1 far along the ray (`10^8` away in double precision, `10^4` in single), the ray
+/// passing 0.5 from its centre, meets it at `t = far - sqrt(0.75)`. The textbook
+/// discriminant `(s.d)^2 - (|s|^2 - R^2)` subtracts two numbers near `far^2`, whose
+/// rounding is larger than the 0.75 sought, and finds `far` or nothing.
+fn far_sphere() -> Outcome {
+    let far: Real = if std::mem::size_of::<Real>() == 4 {
+        1e4
+    } else {
+        1e8
+    };
+    let centre = Vec3::new(0.5, 0.0, -far);
+    let ray = Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0));
+    let gave = sphere(centre, 1.0).intersect(&ray);
+    let expected = far - (0.75 as Real).sqrt();
+    ensure(same_distance(gave, Some(expected), 0.05), || {
+        say!(
+            "Sphere::intersect: a sphere of radius 1 at (0.5, 0, -{far}), the ray from the origin along -z: gave {}, expected {} (the textbook discriminant loses 0.75 to rounding next to {far}^2: compute it as R^2 - |s - (s.d) d|^2)",
+            "Sphere::intersect\u{a0}: une sphère de rayon 1 en (0,5\u{a0}; 0\u{a0}; -{far}), le rayon issu de l'origine selon -z\u{a0}: donne {}, attendu {} (le discriminant du manuel perd 0,75 dans l'arrondi à côté de {far}^2\u{a0}: calculez-le comme R^2 - |s - (s.d) d|^2)",
+            maybe(gave),
+            maybe(Some(expected))
+        )
+    })
 }
 
 /// A scene of spheres read from TOML text, as a stage's scene file is read.
