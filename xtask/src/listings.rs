@@ -5,6 +5,8 @@
 //! session N - 1, end with `// +`. The views are written afresh into
 //! `target/book-views/` each time the book is built, so a listing shows exactly
 //! what a student has after that session: no gate, no later session's code.
+//! `{{#listing beyond FILE ANCHOR}}`, for the appendices, takes the code from the
+//! crate itself: what goes beyond the course is in no view.
 //!
 //! `{{#exercises sN}}` becomes the table of session N's exercises, read from their
 //! markers in the view's code (see [`crate::exercise`]) and their checklist lines
@@ -49,6 +51,8 @@ struct Words {
     gained: &'static str,
     /// After a listing's session: the code is the session before's.
     unchanged: &'static str,
+    /// In place of a session: the code goes beyond the course.
+    beyond: &'static str,
     /// The exercises table's header.
     header: &'static str,
     /// Between two functions of one exercise.
@@ -59,6 +63,7 @@ const ENGLISH: Words = Words {
     session: "session",
     gained: ", lines marked `// +` new in this session",
     unchanged: ", unchanged since the last session",
+    beyond: "beyond the course",
     header: "| exercise | what you write | function | file | checklist line |",
     and: " and ",
 };
@@ -67,6 +72,7 @@ const FRENCH: Words = Words {
     session: "séance",
     gained: ", lignes marquées `// +` nouvelles dans cette séance",
     unchanged: ", inchangé depuis la séance précédente",
+    beyond: "au-delà du cours",
     header: "| exercice | ce que vous écrivez | fonction | fichier | ligne de la liste de contrôle |",
     and: " et ",
 };
@@ -229,9 +235,19 @@ fn listing(directive: &str, views: &Path, words: &Words) -> Result<String, Strin
     let parts: Vec<&str> = directive.split_whitespace().collect();
     let [session, file, anchor] = parts[..] else {
         return Err(format!(
-            "`{{{{#listing {directive}}}}}`: expected sN FILE ANCHOR"
+            "`{{{{#listing {directive}}}}}`: expected sN FILE ANCHOR, or beyond FILE ANCHOR"
         ));
     };
+    if session == "beyond" {
+        // The views are in `target/book-views/` of the crate.
+        let root = views.ancestors().nth(2).unwrap_or(views);
+        let code = anchored(&root.join(file), anchor)?
+            .ok_or_else(|| format!("no anchor `{anchor}` in {file}"))?;
+        let beyond = words.beyond;
+        return Ok(format!(
+            "<p class=\"listing-caption\"><code>{file}</code> ({beyond})</p>\n\n```rust,ignore\n{code}```\n"
+        ));
+    }
     let n: u32 = session
         .strip_prefix('s')
         .and_then(|n| n.parse().ok())
