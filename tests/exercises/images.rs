@@ -142,7 +142,10 @@ fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome
         &Linear::from_rgb8(yours, gamma),
         &Linear::from_rgb8(reference, gamma),
         gamma,
-        false,
+        Drawn {
+            bounces: false,
+            light_samples: false,
+        },
     ) {
         why += &then(&hint);
     }
@@ -166,7 +169,7 @@ fn compare_noisy(yours: &Film, reference: &Linear, settings: &Settings) -> Outco
     let shown = displayed(yours, gamma);
     let reference_shown = to_rgb8(reference, gamma);
     if let Some(hint) = flip_hint(&shown, &reference_shown)
-        .or_else(|| brightness_hint(&linear, reference, gamma, settings.indirect))
+        .or_else(|| brightness_hint(&linear, reference, gamma, Drawn::of(settings)))
     {
         why += &then(&hint);
     }
@@ -240,14 +243,32 @@ fn gamma_hint(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Option<Str
     }
 }
 
+/// What a stage draws at random, which decides the hints its brightness may get.
+#[derive(Clone, Copy)]
+struct Drawn {
+    /// Bounce directions (indirect light).
+    bounces: bool,
+    /// Directions towards a sphere light (light sampling).
+    light_samples: bool,
+}
+
+impl Drawn {
+    /// What a stage with `settings` draws.
+    fn of(settings: &Settings) -> Drawn {
+        Drawn {
+            bounces: settings.indirect,
+            light_samples: settings.light_sampling,
+        }
+    }
+}
+
 /// The mistake an image brighter or darker everywhere by a telling factor shows; a
-/// factor of two points at the bounce's weight only where the stage has `bounces`
-/// (indirect light).
+/// hint names a density only where the stage draws with it (`drawn`).
 fn brightness_hint(
     yours: &Linear,
     reference: &Linear,
     gamma: Real,
-    bounces: bool,
+    drawn: Drawn,
 ) -> Option<String> {
     let ratio = brightness_ratio(yours, reference, gamma);
     let mean = ratio.iter().sum::<f64>() / 3.0;
@@ -258,12 +279,22 @@ fn brightness_hint(
             "about pi times too bright: a diffuse surface reflects albedo / pi (the BRDF), and the light's power spreads over 4 pi r^2",
             "l'image est environ pi fois trop claire\u{a0}: une surface diffuse renvoie albédo / pi (la BRDF), et la puissance de la source se répartit sur 4 pi r^2"
         )
-    } else if near(1.0 / pi) {
+    } else if near(1.0 / pi) && drawn.bounces {
         say!(
             "about pi times too dark: is 1 / pi counted twice, or the cosine-weighted pdf's pi not cancelled?",
             "l'image est environ pi fois trop sombre\u{a0}: le 1 / pi est-il compté deux fois, ou le pi de la densité de probabilité (pdf) pondérée par le cosinus n'est-il pas simplifié\u{a0}?"
         )
-    } else if bounces && (near(2.0) || near(0.5)) {
+    } else if near(1.0 / pi) {
+        say!(
+            "about pi times too dark: is 1 / pi counted twice? A diffuse surface reflects albedo / pi, once",
+            "l'image est environ pi fois trop sombre\u{a0}: le 1 / pi est-il compté deux fois\u{a0}? Une surface diffuse renvoie albédo / pi, une seule fois"
+        )
+    } else if drawn.light_samples && (near(2.0) || near(0.5)) {
+        say!(
+            "about twice too bright or too dark: a sample's weight must match the density it was drawn with (a direction in the light's cone: 1 / (2 pi (1 - cos theta_max)); a cosine-weighted bounce: cos(theta) / pi)",
+            "l'image est environ deux fois trop claire ou trop sombre\u{a0}: le poids d'un échantillon doit correspondre à la densité avec laquelle il a été tiré (une direction dans le cône de la source\u{a0}: 1 / (2 pi (1 - cos theta_max))\u{a0}; un rebond pondéré par le cosinus\u{a0}: cos(theta) / pi)"
+        )
+    } else if drawn.bounces && (near(2.0) || near(0.5)) {
         say!(
             "about twice too bright or too dark: the weight of a bounce must match how its direction was drawn (for a cosine-weighted direction the cosine and pi cancel, leaving the albedo)",
             "l'image est environ deux fois trop claire ou trop sombre\u{a0}: le poids d'un rebond doit correspondre à la façon dont sa direction a été tirée (pour une direction pondérée par le cosinus, le cosinus et pi se simplifient, il reste l'albédo)"

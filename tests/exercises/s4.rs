@@ -183,6 +183,14 @@ fn thin_lens() -> Outcome {
                 )
             },
         )?;
+        ensure(direction.z < 0.0, || {
+            say!(
+                "the ray from {} along {} never reaches the focus plane z = -10: it must head from its point of the lens towards (2.5, 5, -10), where the pinhole ray meets that plane",
+                "le rayon issu de {} selon {} n'atteint jamais le plan de mise au point z = -10\u{a0}: il doit aller de son point de la lentille vers (2,5\u{a0}; 5\u{a0}; -10), où le rayon du sténopé rencontre ce plan",
+                vec(origin),
+                vec(direction)
+            )
+        })?;
         let s = (focus.z - origin.z) / direction.z;
         close_vec(
             &say!(

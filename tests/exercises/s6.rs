@@ -85,9 +85,17 @@ fn build() -> Outcome {
         seen[t as usize] += 1;
     }
     ensure(bvh.order.len() == n && seen.iter().all(|&s| s == 1), || {
+        let missing = seen
+            .iter()
+            .position(|&s| s == 0)
+            .map_or("-".into(), |t| t.to_string());
+        let twice = seen
+            .iter()
+            .position(|&s| s > 1)
+            .map_or("-".into(), |t| t.to_string());
         say!(
-            "Bvh::order must list each of Spot's {n} triangles once: it has {} entries",
-            "Bvh::order doit lister une fois chacun des {n} triangles de Spot\u{a0}: il compte {} entrées",
+            "Bvh::order must list each of Spot's {n} triangles once: it has {} entries, lacks triangle {missing} and lists triangle {twice} more than once",
+            "Bvh::order doit lister une fois chacun des {n} triangles de Spot\u{a0}: il compte {} entrées, il lui manque le triangle {missing} et il liste plus d'une fois le triangle {twice}",
             bvh.order.len()
         )
     })?;
@@ -142,8 +150,8 @@ fn build() -> Outcome {
             for child in [node.first as usize, node.first as usize + 1] {
                 let inner = bvh.nodes.get(child).ok_or_else(|| {
                     say!(
-                        "node {index} points to node {child}, past the {} nodes",
-                        "le nœud {index} pointe vers le nœud {child}, au-delà des {} nœuds",
+                        "node {index} points to node {child}, past the {} nodes: an inner node's children are the nodes first and first + 1, pushed side by side when it is split",
+                        "le nœud {index} pointe vers le nœud {child}, au-delà des {} nœuds\u{a0}: les enfants d'un nœud interne sont les nœuds first et first + 1, ajoutés côte à côte quand on le divise",
                         bvh.nodes.len()
                     )
                 })?;
@@ -158,9 +166,11 @@ fn build() -> Outcome {
         }
     }
     ensure(covered.iter().all(|&c| c), || {
+        let slot = covered.iter().position(|&c| !c).unwrap_or(0);
+        let triangle = bvh.order[slot];
         say!(
-            "some entries of Bvh::order are in no leaf",
-            "des entrées de Bvh::order ne sont dans aucune feuille"
+            "triangle {triangle} (Bvh::order[{slot}]) is in no leaf: a ray can never find it; the leaves' ranges must cover the whole of Bvh::order",
+            "le triangle {triangle} (Bvh::order[{slot}]) n'est dans aucune feuille\u{a0}: aucun rayon ne peut le trouver\u{a0}; les plages des feuilles doivent couvrir tout Bvh::order"
         )
     })?;
     ensure(leaves >= n / 16, || {
