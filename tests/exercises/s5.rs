@@ -139,7 +139,8 @@ fn triangle() -> Outcome {
 /// The box `[-1, 1]^3`: from `(0, 0, 5)` down `-z` the ray enters at `t = 4`; from
 /// `(-5, 0.5, 0)` along `+x`, at 4 too (the zero components of the direction give
 /// infinite `1 / d`, which must still work); from inside, at once (0); beside the
-/// box, behind the ray, or entering beyond `t_max`, never.
+/// box, behind the ray, or entering beyond `t_max`, never; lying in a face with a
+/// direction component of `-0`, at 4 (the chapter's box on NaN).
 fn slab() -> Outcome {
     let cube = Aabb {
         min: Vec3::splat(-1.0),
@@ -226,6 +227,16 @@ fn slab() -> Outcome {
             Vec3::new(-1.0, -1.0, 0.0),
             100.0,
             Some(3.0 * (2.0 as Real).sqrt()),
+        ),
+        (
+            [
+                "lying in the face x = -1, from (-1, 0, 5) along (-0, 0, -1) (the chapter's box on NaN: 1 / -0 is -infinity, and 0 x infinity is NaN)",
+                "couché dans la face x = -1, issu de (-1\u{a0}; 0\u{a0}; 5) selon (-0\u{a0}; 0\u{a0}; -1) (l'encadré du chapitre sur NaN\u{a0}: 1 / -0 vaut -l'infini, et 0 x l'infini vaut NaN)",
+            ],
+            Vec3::new(-1.0, 0.0, 5.0),
+            Vec3::new(-0.0, 0.0, -1.0),
+            100.0,
+            Some(4.0),
         ),
     ];
     for ([what, quoi], origin, direction, t_max, expected) in cases {
