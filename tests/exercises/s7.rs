@@ -43,7 +43,8 @@ const BLUE: Colour = Colour::new(0.0, 0.0, 1.0);
 /// A 2 x 2 texture, rows from the top: red, green / blue, white. `u` runs left to
 /// right and `v` bottom to top, so `(0.25, 0.75)` is the top-left texel's centre
 /// (red) and `(0.75, 0.25)` the bottom right's (white); the texture repeats, so
-/// `(1.25, 0.75)` is red again. Bilinear at a texel's centre is that texel, and at
+/// `(1.25, 0.75)` is red again, and `(-0.25, 0.75)` green, by the Euclidean
+/// remainder of a negative address. Bilinear at a texel's centre is that texel, and at
 /// the texture's centre the mean of the four, `(0.5, 0.5, 0.5)`.
 fn lookup() -> Outcome {
     let texture = |filter| Texture {
@@ -84,6 +85,15 @@ fn lookup() -> Outcome {
             [
                 "one texture to the right of the top-left centre",
                 "une largeur de texture à droite du centre du texel en haut à gauche",
+            ],
+        ),
+        (
+            Filter::Nearest,
+            [-0.25, 0.75],
+            GREEN,
+            [
+                "a quarter of a texture left of its edge, which wraps to the top-right texel (the chapter's Euclidean remainder: -1 wraps to 1, where % gives -1)",
+                "un quart de texture à gauche de son bord, qui revient au texel en haut à droite (le reste euclidien du chapitre\u{a0}: -1 revient à 1, là où % donne -1)",
             ],
         ),
         (
