@@ -108,6 +108,24 @@ pub const MISTAKES: &[Mistake] = &[
         image: |c| Ok(Some(c.flipped(false))),
     },
     Mistake {
+        name: "half a turn",
+        hint: "the image is turned half a turn: both the rows and the columns run the wrong way (row i counts from the bottom as H - 1 - row, and x grows with the column j)",
+        french: [
+            "un demi-tour",
+            "l'image a fait un demi-tour : les lignes et les colonnes vont toutes deux dans le mauvais sens (la ligne i, comptée depuis le bas, est H - 1 - ligne, et x croît avec la colonne j)",
+        ],
+        image: |c| Ok(Some(c.moved(|x, y, w, h| (w - 1 - x, h - 1 - y)))),
+    },
+    Mistake {
+        name: "rows and columns swapped",
+        hint: "rows and columns are swapped: the pixel of column j and row i is written at column i and row j (a pixel's index in the image is row * W + column)",
+        french: [
+            "lignes et colonnes échangées",
+            "les lignes et les colonnes sont échangées : le pixel de la colonne j et de la ligne i est écrit à la colonne i et à la ligne j (l'indice d'un pixel dans l'image est ligne * W + colonne)",
+        ],
+        image: |c| Ok((c.film.width == c.film.height).then(|| c.moved(|x, y, _, _| (y, x)))),
+    },
+    Mistake {
         name: "shadow acne",
         hint: "lit surfaces are speckled with dark dots (shadow acne): start shadow rays a little off the surface, P + epsilon N, not at P",
         french: [
@@ -226,15 +244,19 @@ impl Candidates<'_> {
 
     /// The reference film upside down (`vertically`) or mirrored.
     fn flipped(&self, vertically: bool) -> Film {
+        match vertically {
+            true => self.moved(|x, y, _, h| (x, h - 1 - y)),
+            false => self.moved(|x, y, w, _| (w - 1 - x, y)),
+        }
+    }
+
+    /// The reference film with each pixel `(x, y)` taken from the pixel
+    /// `from(x, y, width, height)` of the reference.
+    fn moved(&self, from: impl Fn(usize, usize, usize, usize) -> (usize, usize)) -> Film {
         let (w, h) = (self.film.width as usize, self.film.height as usize);
         let mut film = self.film.clone();
         for (i, pixel) in film.pixels.iter_mut().enumerate() {
-            let (x, y) = (i % w, i / w);
-            let (sx, sy) = if vertically {
-                (x, h - 1 - y)
-            } else {
-                (w - 1 - x, y)
-            };
+            let (sx, sy) = from(i % w, i / w, w, h);
             *pixel = self.film.pixels[sy * w + sx];
         }
         film

@@ -321,7 +321,8 @@ fn a_scene_file_written_otherwise_gets_the_same_diagnosis() {
     }
 }
 
-/// Mistakes of the image's rows and columns: written upside down or mirrored.
+/// Mistakes of the image's rows and columns: written upside down, mirrored, both
+/// (half a turn), or with rows and columns swapped.
 #[test]
 fn flipped_images_are_caught_with_their_hint() {
     let cache = cache();
@@ -338,6 +339,17 @@ fn flipped_images_are_caught_with_their_hint() {
             &cache,
         );
         assert!(caught(&mirrored, "mirrored"), "{name}: {mirrored:?}");
+        let turned = checked(stage(name), &image::imageops::rotate180(&image), &cache);
+        assert!(caught(&turned, "half a turn"), "{name}: {turned:?}");
+        let swapped = checked(
+            stage(name),
+            &image::imageops::rotate90(&image::imageops::flip_vertical(&image)),
+            &cache,
+        );
+        assert!(
+            caught(&swapped, "rows and columns swapped"),
+            "{name}: {swapped:?}"
+        );
     }
 }
 
