@@ -126,6 +126,15 @@ pub const MISTAKES: &[Mistake] = &[
         image: |c| Ok((c.film.width == c.film.height).then(|| c.moved(|x, y, _, _| (y, x)))),
     },
     Mistake {
+        name: "shifted a pixel",
+        hint: "the image is the stage's moved by one pixel: row i counts from the bottom as H - 1 - row (not H - row), and a pixel's centre is half a pixel in, x = j - W/2 + 0.5",
+        french: [
+            "décalée d'un pixel",
+            "l'image est celle de l'étape décalée d'un pixel : la ligne i, comptée depuis le bas, est H - 1 - ligne (et non H - ligne), et le centre d'un pixel est à un demi-pixel du bord, x = j - W/2 + 0.5",
+        ],
+        image: |c| Ok(Some(c.shifted())),
+    },
+    Mistake {
         name: "shadow acne",
         hint: "lit surfaces are speckled with dark dots (shadow acne): start shadow rays a little off the surface, P + epsilon N, not at P",
         french: [
@@ -248,6 +257,21 @@ impl Candidates<'_> {
             true => self.moved(|x, y, _, h| (x, h - 1 - y)),
             false => self.moved(|x, y, w, _| (w - 1 - x, y)),
         }
+    }
+
+    /// The reference film moved by one pixel, in whichever of the four directions
+    /// the student's image is closest to.
+    pub fn shifted(&self) -> Film {
+        let moves: [fn(usize, usize, usize, usize) -> (usize, usize); 4] = [
+            |x, y, _, _| (x, y.saturating_sub(1)),
+            |x, y, _, h| (x, (y + 1).min(h - 1)),
+            |x, y, _, _| (x.saturating_sub(1), y),
+            |x, y, w, _| ((x + 1).min(w - 1), y),
+        ];
+        let films = moves.map(|m| self.moved(m));
+        let share = |film: &Film| self.share_differing(self.student, film);
+        let best = (0..4).min_by(|&a, &b| share(&films[a]).total_cmp(&share(&films[b])));
+        films[best.unwrap_or(0)].clone()
     }
 
     /// The reference film with each pixel `(x, y)` taken from the pixel

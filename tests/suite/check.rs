@@ -321,6 +321,27 @@ fn a_scene_file_written_otherwise_gets_the_same_diagnosis() {
     }
 }
 
+/// A pixel loop off by one moves the image by a pixel: caught with its hint, on
+/// stages where the move changes many pixels (spheres, glass) and on one where it
+/// changes only the edges, which the comparison allows for (shading).
+#[test]
+fn an_image_moved_by_a_pixel_is_caught_with_its_hint() {
+    let cache = cache();
+    for name in ["spheres", "shading", "glass"] {
+        let image = picture(&scene(stage(name), &same, 4, None));
+        let (w, h) = image.dimensions();
+        let down = RgbImage::from_fn(w, h, |x, y| *image.get_pixel(x, y.saturating_sub(1)));
+        let right = RgbImage::from_fn(w, h, |x, y| *image.get_pixel(x.saturating_sub(1), y));
+        for (way, moved) in [("down", down), ("right", right)] {
+            let report = checked(stage(name), &moved, &cache);
+            assert!(
+                caught(&report, "shifted a pixel"),
+                "{name}, {way}: {report:?}"
+            );
+        }
+    }
+}
+
 /// Mistakes of the image's rows and columns: written upside down, mirrored, both
 /// (half a turn), or with rows and columns swapped.
 #[test]
