@@ -27,6 +27,10 @@ pub struct Mistake {
     image: fn(&Candidates) -> Result<Option<Film>, SceneError>,
 }
 
+/// Where a pixel `(x, y)` of an image of `width` x `height` takes its colour from,
+/// in an image moved or turned: `(x, y, width, height)` to the source pixel.
+type Move = fn(usize, usize, usize, usize) -> (usize, usize);
+
 /// What the mistakes' images are made from.
 pub struct Candidates<'a> {
     /// Where renders come from.
@@ -262,7 +266,7 @@ impl Candidates<'_> {
     /// The reference film moved by one pixel, in whichever of the four directions
     /// the student's image is closest to.
     pub fn shifted(&self) -> Film {
-        let moves: [fn(usize, usize, usize, usize) -> (usize, usize); 4] = [
+        let moves: [Move; 4] = [
             |x, y, _, _| (x, y.saturating_sub(1)),
             |x, y, _, h| (x, (y + 1).min(h - 1)),
             |x, y, _, _| (x.saturating_sub(1), y),
@@ -276,7 +280,7 @@ impl Candidates<'_> {
 
     /// The reference film with each pixel `(x, y)` taken from the pixel
     /// `from(x, y, width, height)` of the reference.
-    fn moved(&self, from: impl Fn(usize, usize, usize, usize) -> (usize, usize)) -> Film {
+    fn moved(&self, from: Move) -> Film {
         let (w, h) = (self.film.width as usize, self.film.height as usize);
         let mut film = self.film.clone();
         for (i, pixel) in film.pixels.iter_mut().enumerate() {
