@@ -55,6 +55,7 @@ struct Found {
 /// extra stages last, by name), each with its text included.
 fn write_stages() {
     let mut found: Vec<Found> = (1..=7).flat_map(stages_of).collect();
+    assert!(!found.is_empty(), "no stage's file in sessions/s1 to sessions/s7");
     found.sort_by_key(|s| (s.session, s.figure.unwrap_or(u32::MAX), s.name.clone()));
     let mut text = String::from("&[\n");
     for s in &found {
@@ -72,7 +73,10 @@ fn write_stages() {
 /// The stages of `sessions/sN`, in no order; a file without a `[stage]` table with a
 /// title stops the build, naming the file.
 fn stages_of(session: u32) -> Vec<Found> {
-    let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("sessions/s{session}"));
+    // The folder Cargo runs this script for, read when it runs: a copy of the crate
+    // built into the same target folder may share this script's compiled binary.
+    let root = std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR");
+    let folder = Path::new(&root).join(format!("sessions/s{session}"));
     let Ok(entries) = std::fs::read_dir(&folder) else {
         return vec![];
     };
