@@ -133,18 +133,10 @@ fn copy_tests(root: &Path, out: &Path, session: u32) -> Result<(), String> {
         module_tree(&file, root, out, session)?;
     }
     module_tree(&tests.join("suite/main.rs"), root, out, session)?;
-    for entry in fs::read_dir(tests.join("bad-input")).map_err(|e| e.to_string())? {
-        let path = entry.map_err(|e| e.to_string())?.path();
-        let text = fs::read_to_string(&path).unwrap_or_default();
-        let needs = text
-            .lines()
-            .find_map(|l| l.strip_prefix("# session: "))
-            .and_then(|n| n.trim().parse::<u32>().ok());
-        if needs.is_none_or(|n| n <= session) {
-            copy(
-                &path,
-                &out.join("tests/bad-input").join(path.file_name().unwrap()),
-            )?;
+    for n in 1..=session {
+        let folder = tests.join(format!("bad-input/s{n}"));
+        if folder.is_dir() {
+            copy_folder(&folder, &out.join(format!("tests/bad-input/s{n}")))?;
         }
     }
     let stages: Vec<String> = (1..=session)
