@@ -55,7 +55,10 @@ struct Found {
 /// extra stages last, by name), each with its text included.
 fn write_stages() {
     let mut found: Vec<Found> = (1..=7).flat_map(stages_of).collect();
-    assert!(!found.is_empty(), "no stage's file in sessions/s1 to sessions/s7");
+    assert!(
+        !found.is_empty(),
+        "no stage's file in sessions/s1 to sessions/s7"
+    );
     found.sort_by_key(|s| (s.session, s.figure.unwrap_or(u32::MAX), s.name.clone()));
     let mut text = String::from("&[\n");
     for s in &found {
