@@ -9,8 +9,8 @@
 //! course's code (or the samplers').
 
 use crate::Render;
-use crate::fast::paths_at_once;
-use crate::fast::sphere_lanes::SphereLanes;
+use crate::fast::paths::paths_at_once;
+use crate::fast::paths::sphere_lanes::SphereLanes;
 use crate::render::render_rows;
 use crate::samplers;
 use crate::scene::Scene;

@@ -9,7 +9,7 @@ use std::time::Instant;
 use clap::{ArgMatches, FromArgMatches, Parser, ValueEnum};
 use raycourse::acceleration::Bvh;
 use raycourse::fast::FastBvh;
-use raycourse::fast::fast_bvh::TestLanes;
+use raycourse::fast::hierarchy::fast_bvh::TestLanes;
 use raycourse::maths::{Mat3, Vec3};
 use raycourse::meshes::{Mesh, Placement, Search, read_obj};
 use raycourse::studies::rayset::{RayKind, RaySet, Timing, time_set};
@@ -101,7 +101,11 @@ fn load(path: &Path, bvh: BvhKind, leaf: u16) -> Result<Mesh, Failure> {
     let start = Instant::now();
     mesh.search = match bvh {
         BvhKind::Midpoint => Arc::new(Bvh::build(&mesh)) as Arc<dyn Search>,
-        BvhKind::Sah => Arc::new(raycourse::fast::sah::build(&mesh, leaf.into(), 1)),
+        BvhKind::Sah => Arc::new(raycourse::fast::hierarchy::sah::build(
+            &mesh,
+            leaf.into(),
+            1,
+        )),
         BvhKind::Fast => Arc::new(FastBvh::build(&mesh, leaf)),
         BvhKind::FastPortable => {
             Arc::new(FastBvh::build(&mesh, leaf).with_lanes(TestLanes::Portable))

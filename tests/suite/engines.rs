@@ -6,7 +6,7 @@
 
 use std::num::NonZeroU32;
 
-use raycourse::fast::paths_at_once;
+use raycourse::fast::paths::paths_at_once;
 use raycourse::scene::beyond::Sampler;
 use raycourse::{Overrides, Render, Scene, Stage, render, stages};
 

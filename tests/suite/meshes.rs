@@ -124,11 +124,11 @@ fn searches_agree(obj: &str, count: u64) {
     }
     #[cfg(feature = "beyond")]
     {
-        mesh.search = Arc::new(raycourse::fast::sah::build(&mesh, 8, 1));
+        mesh.search = Arc::new(raycourse::fast::hierarchy::sah::build(&mesh, 8, 1));
         let sah = hits(&mesh, &rays);
         let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "SAH BVH differs from brute force");
-        use raycourse::fast::fast_bvh::TestLanes;
+        use raycourse::fast::hierarchy::fast_bvh::TestLanes;
         let lanes = [1, 4, 8, 16].map(|leaf| (leaf, TestLanes::fastest()));
         for (leaf, lanes) in lanes.into_iter().chain([(8, TestLanes::Portable)]) {
             let fast = raycourse::fast::FastBvh::build(&mesh, leaf).with_lanes(lanes);

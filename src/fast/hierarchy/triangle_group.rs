@@ -5,7 +5,7 @@
 //! the exact test, so the answer is the exact test's; most of a leaf's triangles
 //! never reach it.
 
-use crate::fast::float_lanes::{FloatLanes, Half, LaneSource};
+use crate::fast::simd::float_lanes::{FloatLanes, Half, LaneSource};
 use crate::geometry::ShearedRay;
 use crate::maths::{Vec3, to_single};
 

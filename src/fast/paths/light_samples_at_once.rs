@@ -1,12 +1,12 @@
 //! Beyond the course: a sampled sphere light at the hits of the paths followed at
 //! once (session 4), four at a time on the lanes: `Tracer::light_sample` for four
 //! hits, each path drawing its own random numbers first, as
-//! [`hits_at_once`](super::hits_at_once) does for a point light.
+//! [`hits_at_once`](crate::fast::paths::hits_at_once) does for a point light.
 
-use crate::fast::direct_at_once::{Direct, Towards};
-use crate::fast::four_lanes::{FourLanes, repeated};
-use crate::fast::path::{PATHS, Path, Shaded};
-use crate::fast::shading::{self, vector};
+use crate::fast::paths::direct_at_once::{Direct, Towards};
+use crate::fast::paths::path::{PATHS, Path, Shaded};
+use crate::fast::paths::shading::{self, vector};
+use crate::fast::simd::four_lanes::{FourLanes, repeated};
 use crate::lights::SphereLight;
 use crate::maths::{Colour, PI, uniform_pair};
 

@@ -2,8 +2,8 @@
 //! of the `wide` crate, which uses the SIMD instructions the build targets (two
 //! `f64` per instruction on any x86-64) and plain arithmetic elsewhere.
 
-use crate::fast::lanes::four_ray_sphere_test;
-use crate::fast::shading::four_hit_shading;
+use crate::fast::paths::shading::four_hit_shading;
+use crate::fast::simd::lanes::four_ray_sphere_test;
 use crate::maths::Real;
 
 /// Four [`Real`] numbers, one per lane.

@@ -20,8 +20,10 @@ use std::arch::x86_64::{
     _mm256_or_pd, _mm256_set_pd, _mm256_set1_pd, _mm256_sqrt_pd, _mm256_sub_pd, _mm256_xor_pd,
 };
 
-use crate::fast::lanes::four_ray_sphere_test;
-use crate::fast::shading::{FourVectors, LightSamples, PointLit, SphereHits, four_hit_shading};
+use crate::fast::paths::shading::{
+    FourVectors, LightSamples, PointLit, SphereHits, four_hit_shading,
+};
+use crate::fast::simd::lanes::four_ray_sphere_test;
 use crate::geometry::{Hit, Ray};
 use crate::lights::PointLight;
 use crate::maths::{Colour, Vec3};
@@ -39,7 +41,7 @@ impl Avx {
         std::arch::is_x86_feature_detected!("avx").then_some(Avx(()))
     }
 
-    /// The four-ray test of [`crate::fast::lanes`] (its `nearest_of_four`) in AVX
+    /// The four-ray test of [`crate::fast::simd::lanes`] (its `nearest_of_four`) in AVX
     /// instructions, on this processor, which has them.
     pub fn nearest_of_four(
         self,
@@ -51,21 +53,21 @@ impl Avx {
         unsafe { nearest_of_four(spheres, rays) }
     }
 
-    /// The hit records of [`crate::fast::shading`] (its `sphere_hits`) in AVX
+    /// The hit records of [`crate::fast::paths::shading`] (its `sphere_hits`) in AVX
     /// instructions.
     pub fn sphere_hits(self, rays: [&Ray; 4], t: [f64; 4], spheres: [&[f64; 5]; 4]) -> SphereHits {
         // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
         unsafe { sphere_hits(rays, t, spheres) }
     }
 
-    /// The direct light of [`crate::fast::shading`] (its `point_light`) in AVX
+    /// The direct light of [`crate::fast::paths::shading`] (its `point_light`) in AVX
     /// instructions.
     pub fn point_light(self, hits: [&Hit; 4], albedo: [Colour; 4], light: &PointLight) -> PointLit {
         // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
         unsafe { point_light(hits, albedo, light) }
     }
 
-    /// The light samples of [`crate::fast::shading`] (its `sphere_light`) in AVX
+    /// The light samples of [`crate::fast::paths::shading`] (its `sphere_light`) in AVX
     /// instructions.
     pub fn sphere_light(
         self,
@@ -78,7 +80,7 @@ impl Avx {
         unsafe { sphere_light(hits, albedo, samples, light) }
     }
 
-    /// The bounces of [`crate::fast::shading`] (its `bounces`) in AVX instructions.
+    /// The bounces of [`crate::fast::paths::shading`] (its `bounces`) in AVX instructions.
     pub fn bounces(self, hits: [&Hit; 4], samples: [[f64; 3]; 4]) -> (FourVectors, FourVectors) {
         // SAFETY: as in `nearest_of_four`, an `Avx` proves the processor has AVX.
         unsafe { bounces(hits, samples) }

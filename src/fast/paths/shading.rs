@@ -113,7 +113,7 @@ macro_rules! four_hit_shading {
         /// The lanes of three coordinates.
         $(#[$attribute])*
         #[inline]
-        fn scatter3(v: [L; 3]) -> $crate::fast::shading::FourVectors {
+        fn scatter3(v: [L; 3]) -> $crate::fast::paths::shading::FourVectors {
             [lanes(v[0]), lanes(v[1]), lanes(v[2])]
         }
 
@@ -186,7 +186,7 @@ macro_rules! four_hit_shading {
             point: [L; 3],
             offset: [L; 3],
             direction: [L; 3],
-        ) -> $crate::fast::shading::FourVectors {
+        ) -> $crate::fast::paths::shading::FourVectors {
             let away = lt(dot(direction, offset), splat(0.0));
             let [x, y, z] = offset;
             let offset = [
@@ -217,7 +217,7 @@ macro_rules! four_hit_shading {
             rays: [&$crate::geometry::Ray; 4],
             t: [$crate::maths::Real; 4],
             spheres: [&[$crate::maths::Real; 5]; 4],
-        ) -> $crate::fast::shading::SphereHits {
+        ) -> $crate::fast::paths::shading::SphereHits {
             let [r0, r1, r2, r3] = rays;
             let origin = gather3([r0.origin, r1.origin, r2.origin, r3.origin]);
             let direction = gather3([r0.direction, r1.direction, r2.direction, r3.direction]);
@@ -243,7 +243,7 @@ macro_rules! four_hit_shading {
             let from_centre = minus(origin, centre);
             let outside = gt(dot(from_centre, from_centre), mul(radius, radius));
             let facing = scale(select(outside, splat(1.0), splat(-1.0)), normal);
-            $crate::fast::shading::SphereHits {
+            $crate::fast::paths::shading::SphereHits {
                 point: scatter3(point),
                 normal: scatter3(facing),
                 error: scatter3(error),
@@ -259,7 +259,7 @@ macro_rules! four_hit_shading {
             hits: [&$crate::geometry::Hit; 4],
             albedo: [$crate::maths::Colour; 4],
             light: &$crate::lights::PointLight,
-        ) -> $crate::fast::shading::PointLit {
+        ) -> $crate::fast::paths::shading::PointLit {
             use $crate::maths::PI;
             let [h0, h1, h2, h3] = hits;
             let point = gather3([h0.point, h1.point, h2.point, h3.point]);
@@ -281,7 +281,7 @@ macro_rules! four_hit_shading {
             let origin = spawn(point, offset, direction);
             let [ox, oy, oz] = origin;
             let to_target = minus([gather(ox), gather(oy), gather(oz)], position);
-            $crate::fast::shading::PointLit {
+            $crate::fast::paths::shading::PointLit {
                 lit: scatter3(lit),
                 origin,
                 direction: scatter3(direction),
@@ -300,7 +300,7 @@ macro_rules! four_hit_shading {
             albedo: [$crate::maths::Colour; 4],
             samples: [[$crate::maths::Real; 3]; 4],
             light: ($crate::maths::Vec3, $crate::maths::Real, $crate::maths::Colour),
-        ) -> $crate::fast::shading::LightSamples {
+        ) -> $crate::fast::paths::shading::LightSamples {
             use $crate::maths::PI;
             let (centre, radius, emission) = light;
             let [h0, h1, h2, h3] = hits;
@@ -340,7 +340,7 @@ macro_rules! four_hit_shading {
                 div(mul(div(mul(splat(emission.z), az), pi), cos), pdf),
             ];
             let offset = gather3([h0.offset, h1.offset, h2.offset, h3.offset]);
-            $crate::fast::shading::LightSamples {
+            $crate::fast::paths::shading::LightSamples {
                 lit: scatter3(lit),
                 origin: spawn(point, offset, direction),
                 direction: scatter3(direction),
@@ -356,7 +356,7 @@ macro_rules! four_hit_shading {
         pub(crate) fn bounces(
             hits: [&$crate::geometry::Hit; 4],
             samples: [[$crate::maths::Real; 3]; 4],
-        ) -> ($crate::fast::shading::FourVectors, $crate::fast::shading::FourVectors) {
+        ) -> ($crate::fast::paths::shading::FourVectors, $crate::fast::paths::shading::FourVectors) {
             let [s0, s1, s2, s3] = samples;
             let cos_phi = gather([s0[0], s1[0], s2[0], s3[0]]);
             let sin_phi = gather([s0[1], s1[1], s2[1], s3[1]]);

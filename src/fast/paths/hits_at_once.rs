@@ -4,12 +4,12 @@
 //! bounces. Each is written once for any lanes in [`shading`], the
 //! course's functions step by step, so that every number is theirs to the last bit.
 
-use crate::fast::direct_at_once::{Direct, Towards};
-use crate::fast::four_lanes::{FourLanes, repeated};
-use crate::fast::light_samples_at_once;
-use crate::fast::path::{PATHS, Path, Shaded};
-use crate::fast::shading::{self, vector};
-use crate::fast::sphere_lanes::SphereLanes;
+use crate::fast::paths::direct_at_once::{Direct, Towards};
+use crate::fast::paths::light_samples_at_once;
+use crate::fast::paths::path::{PATHS, Path, Shaded};
+use crate::fast::paths::shading::{self, vector};
+use crate::fast::paths::sphere_lanes::SphereLanes;
+use crate::fast::simd::four_lanes::{FourLanes, repeated};
 use crate::geometry::{Hit, Ray};
 use crate::lights::{Light, PointLight};
 use crate::materials::Material;

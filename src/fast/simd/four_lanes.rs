@@ -2,12 +2,12 @@
 //! where the processor has them (asked once, at run time), else the portable ones.
 //! Both compute every number to the last bit as the course's functions do; this type
 //! only chooses, and calls the tests and the shading written once for any lanes
-//! ([`lanes`](super::lanes), [`shading`](super::shading)).
+//! ([`lanes`](crate::fast::simd::lanes), [`shading`](crate::fast::paths::shading)).
 
+use crate::fast::paths::shading::{FourVectors, LightSamples, PointLit, SphereHits};
 #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
-use crate::fast::avx::Avx;
-use crate::fast::portable;
-use crate::fast::shading::{FourVectors, LightSamples, PointLit, SphereHits};
+use crate::fast::simd::avx::Avx;
+use crate::fast::simd::portable;
 use crate::geometry::{Hit, Ray};
 use crate::lights::PointLight;
 use crate::maths::{Colour, Real, Vec3};
@@ -115,8 +115,8 @@ pub(crate) fn repeated<T>(hits: &[Option<T>; 4]) -> Option<[&T; 4]> {
 mod tests {
     use super::*;
     use crate::Scene;
-    use crate::fast::shading::vector;
-    use crate::fast::sphere_lanes::SphereLanes;
+    use crate::fast::paths::shading::vector;
+    use crate::fast::paths::sphere_lanes::SphereLanes;
     use crate::geometry::Sphere;
     use crate::materials::Material;
     use crate::maths::frame::Frame;

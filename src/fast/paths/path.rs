@@ -1,10 +1,10 @@
 //! Beyond the course: one pixel's samples, followed one path at a time, one hit per
-//! step of [`paths_at_once`](super::paths_at_once): what each diffuse hit adds
+//! step of [`paths_at_once`](crate::fast::paths::paths_at_once): what each diffuse hit adds
 //! (a `Level`), summed from the end of the path back to its start as the recursive
 //! [`radiance`](crate::integrator::Tracer::radiance) does when it returns.
 
-use crate::fast::direct_at_once::Direct;
-use crate::fast::meshes_at_once;
+use crate::fast::paths::direct_at_once::Direct;
+use crate::fast::paths::meshes_at_once;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
 use crate::maths::{Colour, PI, Real, uniform_pair};
@@ -13,7 +13,7 @@ use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
 
 /// How many paths one thread follows at once: one per lane of
-/// [`FourLanes`](crate::fast::four_lanes::FourLanes).
+/// [`FourLanes`](crate::fast::simd::four_lanes::FourLanes).
 pub const PATHS: usize = 4;
 
 /// A path's hit, facing its ray, and the albedo of the surface hit.

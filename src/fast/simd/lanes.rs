@@ -6,7 +6,7 @@
 //! sphere against the four rays in one go. The test is written here once, as a
 //! macro, with the lane operations as functions (`add`, `mul`, `sqrt`, `lt`,
 //! `select`, ...) that the module using it defines for its own type of lanes: the
-//! `wide` crate's, which works on any processor ([`portable`](super::portable)), and
+//! `wide` crate's, which works on any processor ([`portable`](crate::fast::simd::portable)), and
 //! AVX's, four `f64` per instruction (`avx`). Its steps are those of
 //! [`Sphere::intersect`](crate::geometry::Sphere::intersect), in the same order, so
 //! every distance is the same number to the last bit.
@@ -89,7 +89,7 @@ macro_rules! four_ray_sphere_test {
                 which = select(closer, splat(index), which);
             }
             let (t, which) = (lanes(nearest), lanes(which));
-            let found = $crate::fast::lanes::found;
+            let found = $crate::fast::simd::lanes::found;
             [
                 found(t[0], which[0]),
                 found(t[1], which[1]),

@@ -6,14 +6,14 @@
 //! finds; only the number of steps and the memory traffic shrink.
 
 use crate::acceleration::Bvh;
-#[cfg(target_arch = "x86_64")]
-use crate::fast::avx_lanes::AvxLanes;
-use crate::fast::sah;
-use crate::fast::traversal_stack::{Bits, Pending, Stack};
-use crate::fast::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
-use crate::fast::wide_node::{
+use crate::fast::hierarchy::sah;
+use crate::fast::hierarchy::traversal_stack::{Bits, Pending, Stack};
+use crate::fast::hierarchy::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
+use crate::fast::hierarchy::wide_node::{
     EightLanes, Limit, Portable, WIDTH, WideNode, WideRay, round_down, round_up,
 };
+#[cfg(target_arch = "x86_64")]
+use crate::fast::simd::avx_lanes::AvxLanes;
 use crate::geometry::{Ray, ShearedRay, TriangleTest};
 use crate::maths::{Real, Vec3};
 use crate::meshes::{Mesh, MeshHit, Search};

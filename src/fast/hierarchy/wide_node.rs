@@ -1,9 +1,9 @@
 //! One node of the fast hierarchy: the boxes of its eight children, which a ray
 //! tests at once, eight single-precision numbers per operation where the processor
-//! has AVX (`crate::fast::avx_lanes`) and as two halves of four on any other.
+//! has AVX (`crate::fast::simd::avx_lanes`) and as two halves of four on any other.
 
-use crate::fast::float_lanes::{FloatLanes, Half, LaneSource};
-use crate::fast::triangle_group::{GroupRay, TriangleGroup};
+use crate::fast::hierarchy::triangle_group::{GroupRay, TriangleGroup};
+use crate::fast::simd::float_lanes::{FloatLanes, Half, LaneSource};
 use crate::geometry::Ray;
 use crate::maths::{Real, Vec3, to_single};
 

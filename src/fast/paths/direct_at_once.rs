@@ -1,4 +1,4 @@
-//! The direct light of [paths followed at once](crate::fast::paths_at_once), in two
+//! The direct light of [paths followed at once](crate::fast::paths::paths_at_once), in two
 //! halves, so that the shadow rays of four paths are traced together.
 //!
 //! [`Tracer::direct_light`] traces its shadow ray as soon as it has made it. Here the

@@ -3,7 +3,7 @@
 //! triangles. The processor is asked at run time ([`AvxLanes::detect`]), so the build
 //! needs no flag.
 //!
-//! As in [`crate::fast::avx`], the functions using AVX are compiled with it
+//! As in [`crate::fast::simd::avx`], the functions using AVX are compiled with it
 //! (`#[target_feature(enable = "avx")]`), and code compiled without it calls them
 //! only where an [`AvxLanes`] proves that the processor has AVX: the search is run
 //! through [`AvxLanes::run`], so that the tests inline into it. An [`Eight`], eight
@@ -18,9 +18,9 @@ use std::arch::x86_64::{
 };
 use std::ops::{Add, BitAnd, BitOr, Mul, Neg, Sub};
 
-use crate::fast::float_lanes::{FloatLanes, LaneSource};
-use crate::fast::triangle_group::{GroupRay, TriangleGroup};
-use crate::fast::wide_node::{EightLanes, Limit, WIDTH, WideNode, WideRay, enters_in};
+use crate::fast::hierarchy::triangle_group::{GroupRay, TriangleGroup};
+use crate::fast::hierarchy::wide_node::{EightLanes, Limit, WIDTH, WideNode, WideRay, enters_in};
+use crate::fast::simd::float_lanes::{FloatLanes, LaneSource};
 
 /// Proof that this processor has AVX: made only by [`AvxLanes::detect`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -190,8 +190,8 @@ impl FloatLanes for Eight {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fast::triangle_group::GROUP;
-    use crate::fast::wide_node::Portable;
+    use crate::fast::hierarchy::triangle_group::GROUP;
+    use crate::fast::hierarchy::wide_node::Portable;
     use crate::geometry::{Ray, ShearedRay};
     use crate::maths::{Real, Vec3, pixel_rng, to_single, uniform};
 

@@ -2,9 +2,9 @@
 //! four rays: what [`Scene::nearest_sphere`](crate::scene::Scene::nearest_sphere)
 //! finds for one ray, for four paths followed at once.
 
-use crate::fast::four_lanes::FourLanes;
+use crate::fast::simd::four_lanes::FourLanes;
 #[cfg(test)]
-use crate::fast::portable;
+use crate::fast::simd::portable;
 use crate::geometry::{Ray, Sphere};
 use crate::maths::Real;
 
@@ -53,7 +53,7 @@ mod tests {
     use super::*;
     use crate::Scene;
     #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
-    use crate::fast::avx::Avx;
+    use crate::fast::simd::avx::Avx;
     use crate::materials::Material;
     use crate::maths::{Colour, Vec3, pixel_rng, uniform};
 

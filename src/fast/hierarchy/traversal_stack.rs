@@ -2,7 +2,7 @@
 
 use arrayvec::ArrayVec;
 
-use crate::fast::wide_node::{WIDTH, WideNode};
+use crate::fast::hierarchy::wide_node::{WIDTH, WideNode};
 
 /// Pending children the stack keeps in a fixed array; more spill to the heap.
 const IN_PLACE: usize = 64;

@@ -1,4 +1,4 @@
-//! The meshes of [paths followed at once](crate::fast::paths_at_once): once the
+//! The meshes of [paths followed at once](crate::fast::paths::paths_at_once): once the
 //! four-ray test has found a ray's nearest sphere, the meshes are searched closer
 //! than it, as the course's [`Scene::intersect`] and [`Scene::nearest`] do after
 //! their loop over the spheres, with the course's own searches ([`Mesh::intersect`],
@@ -7,7 +7,7 @@
 //! [`Mesh::intersect`]: crate::meshes::Mesh::intersect
 //! [`Mesh::occluded`]: crate::meshes::Mesh::occluded
 
-use crate::fast::direct_at_once::{Direct, Towards};
+use crate::fast::paths::direct_at_once::{Direct, Towards};
 use crate::geometry::{Hit, Ray};
 use crate::materials::Material;
 use crate::maths::{Colour, Real};

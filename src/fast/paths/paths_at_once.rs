@@ -9,7 +9,7 @@
 //! shadow rays, runs as one test on four rays at once
 //! ([`SphereLanes::nearest_of_four`]), each sphere's steps done for the four rays by
 //! one instruction each, and so does the work at their four hits
-//! ([`hits_at_once`](super::hits_at_once)).
+//! ([`hits_at_once`](crate::fast::paths::hits_at_once)).
 //!
 //! Every path makes the same computations as the recursive
 //! [`radiance`](crate::integrator::Tracer::radiance), in the same order, with its
@@ -22,11 +22,11 @@
 //! `fast/meshes_at_once.rs`), a point or sphere light, bounce limit and Russian
 //! roulette; any other scene takes the course's recursion.
 //!
-//! [`SphereLanes::nearest_of_four`]: crate::fast::sphere_lanes::SphereLanes::nearest_of_four
+//! [`SphereLanes::nearest_of_four`]: crate::fast::paths::sphere_lanes::SphereLanes::nearest_of_four
 
-use crate::fast::hits_at_once::{bounce_all, light_all, sphere_hits};
-use crate::fast::path::{PATHS, Path};
-use crate::fast::sphere_lanes::SphereLanes;
+use crate::fast::paths::hits_at_once::{bounce_all, light_all, sphere_hits};
+use crate::fast::paths::path::{PATHS, Path};
+use crate::fast::paths::sphere_lanes::SphereLanes;
 use crate::materials::Material;
 use crate::maths::Colour;
 use crate::scene::Scene;
