@@ -9,7 +9,7 @@ use std::time::Instant;
 use clap::{ArgMatches, FromArgMatches, Parser, ValueEnum};
 use raycourse::acceleration::Bvh;
 use raycourse::fast::FastBvh;
-use raycourse::fast::hierarchy::fast_bvh::TestLanes;
+use raycourse::fast::lanes::Lanes;
 use raycourse::maths::{Mat3, Vec3};
 use raycourse::meshes::{Mesh, Placement, Search, read_obj};
 use raycourse::studies::rayset::{RayKind, RaySet, Timing, time_set};
@@ -107,9 +107,7 @@ fn load(path: &Path, bvh: BvhKind, leaf: u16) -> Result<Mesh, Failure> {
             1,
         )),
         BvhKind::Fast => Arc::new(FastBvh::build(&mesh, leaf)),
-        BvhKind::FastPortable => {
-            Arc::new(FastBvh::build(&mesh, leaf).with_lanes(TestLanes::Portable))
-        }
+        BvhKind::FastPortable => Arc::new(FastBvh::build(&mesh, leaf).with_lanes(Lanes::Portable)),
     };
     println!(
         "build triangles={} ms={:.1}",

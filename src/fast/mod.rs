@@ -4,11 +4,13 @@
 //!
 //! | folder | what it holds |
 //! |---|---|
-//! | [`simd`] | the lanes: the four-ray sphere test and the boxes' and triangles' tests, on any processor and in AVX |
+//! | [`lanes`] | the lanes the engine runs on, chosen once, and work written once for any of them |
+//! | [`simd`] | the lanes: four numbers or eight side by side, on any processor and in AVX |
 //! | [`paths`] | a row's pixels four paths at a time, their hits, shading and shadow rays |
 //! | [`hierarchy`] | the hierarchy of eight-box nodes and eight-triangle groups |
 
 pub mod hierarchy;
+pub mod lanes;
 pub mod paths;
 pub mod simd;
 

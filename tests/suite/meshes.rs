@@ -128,9 +128,9 @@ fn searches_agree(obj: &str, count: u64) {
         let sah = hits(&mesh, &rays);
         let differing = sah.iter().zip(&brute).filter(|(a, b)| a != b).count();
         assert_eq!(differing, 0, "SAH BVH differs from brute force");
-        use raycourse::fast::hierarchy::fast_bvh::TestLanes;
-        let lanes = [1, 4, 8, 16].map(|leaf| (leaf, TestLanes::fastest()));
-        for (leaf, lanes) in lanes.into_iter().chain([(8, TestLanes::Portable)]) {
+        use raycourse::fast::lanes::Lanes;
+        let lanes = [1, 4, 8, 16].map(|leaf| (leaf, Lanes::fastest()));
+        for (leaf, lanes) in lanes.into_iter().chain([(8, Lanes::Portable)]) {
             let fast = raycourse::fast::FastBvh::build(&mesh, leaf).with_lanes(lanes);
             mesh.search = Arc::new(fast);
             let fast = hits(&mesh, &rays);

@@ -10,34 +10,12 @@ use crate::fast::hierarchy::sah;
 use crate::fast::hierarchy::traversal_stack::{Bits, Pending, Stack};
 use crate::fast::hierarchy::triangle_group::{GROUP, GroupRay, TriangleGroup, lanes};
 use crate::fast::hierarchy::wide_node::{
-    EightLanes, Limit, Portable, WIDTH, WideNode, WideRay, round_down, round_up,
+    EightLanes, Limit, WIDTH, WideNode, WideRay, round_down, round_up,
 };
-#[cfg(target_arch = "x86_64")]
-use crate::fast::simd::avx_lanes::AvxLanes;
+use crate::fast::lanes::{LaneKind, Lanes, OnLanes};
 use crate::geometry::{Ray, ShearedRay, TriangleTest};
 use crate::maths::{Real, Vec3};
 use crate::meshes::{Mesh, MeshHit, Search};
-
-/// How the eight boxes of a node and the eight triangles of a group are tested.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum TestLanes {
-    /// Eight at once in AVX instructions, on a processor that has them.
-    #[cfg(target_arch = "x86_64")]
-    Avx(AvxLanes),
-    /// As two halves of four, on any processor.
-    Portable,
-}
-
-impl TestLanes {
-    /// The fastest this processor has.
-    pub fn fastest() -> TestLanes {
-        #[cfg(target_arch = "x86_64")]
-        if let Some(avx) = AvxLanes::detect() {
-            return TestLanes::Avx(avx);
-        }
-        TestLanes::Portable
-    }
-}
 
 /// A bounding volume hierarchy flattened for traversal.
 #[derive(Clone, Debug, PartialEq)]
@@ -51,7 +29,7 @@ pub struct FastBvh {
     /// mesh's own corners. A leaf's last group is padded with its last triangle.
     ids: Vec<u32>,
     /// How the traversal tests boxes and triangle groups.
-    test_lanes: TestLanes,
+    lanes: Lanes,
 }
 
 impl FastBvh {
@@ -65,7 +43,7 @@ impl FastBvh {
             nodes: vec![],
             groups: vec![],
             ids: Vec::with_capacity(mesh.triangles.len()),
-            test_lanes: TestLanes::fastest(),
+            lanes: Lanes::fastest(),
         };
         fast.nodes.push(WideNode::EMPTY);
         if mesh.triangles.is_empty() {
@@ -99,10 +77,10 @@ impl FastBvh {
         fast
     }
 
-    /// The same hierarchy with its tests made in `test_lanes`: to compare them,
+    /// The same hierarchy with its tests made in `lanes`: to compare them,
     /// or to test the portable lanes on a processor that has faster ones.
-    pub fn with_lanes(self, test_lanes: TestLanes) -> FastBvh {
-        FastBvh { test_lanes, ..self }
+    pub fn with_lanes(self, lanes: Lanes) -> FastBvh {
+        FastBvh { lanes, ..self }
     }
 
     /// Appends a leaf's triangles: their groups, and their indices padded to whole
@@ -150,19 +128,66 @@ impl Search for FastBvh {
     }
 
     fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
-        match self.test_lanes {
-            #[cfg(target_arch = "x86_64")]
-            TestLanes::Avx(avx) => avx.run(|avx| self.nearest_with(avx, mesh, ray, t_max)),
-            TestLanes::Portable => self.nearest_with(Portable, mesh, ray, t_max),
-        }
+        let search = Nearest(Query {
+            bvh: self,
+            mesh,
+            ray,
+            t_max,
+        });
+        self.lanes.run(search)
     }
 
     fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
-        match self.test_lanes {
-            #[cfg(target_arch = "x86_64")]
-            TestLanes::Avx(avx) => avx.run(|avx| self.occluded_with(avx, mesh, ray, t_max)),
-            TestLanes::Portable => self.occluded_with(Portable, mesh, ray, t_max),
-        }
+        self.lanes.run(Occluded(Query {
+            bvh: self,
+            mesh,
+            ray,
+            t_max,
+        }))
+    }
+}
+
+/// A search of the fast hierarchy: a ray against a mesh, up to `t_max`.
+struct Query<'a> {
+    bvh: &'a FastBvh,
+    mesh: &'a Mesh,
+    ray: &'a Ray,
+    t_max: Real,
+}
+
+/// The nearest hit of a query, on any lanes ([`FastBvh::nearest_with`]).
+struct Nearest<'a>(Query<'a>);
+
+impl OnLanes for Nearest<'_> {
+    type Output = Option<MeshHit>;
+
+    #[inline(always)]
+    fn on<L: LaneKind>(self, lanes: L) -> Option<MeshHit> {
+        let Query {
+            bvh,
+            mesh,
+            ray,
+            t_max,
+        } = self.0;
+        bvh.nearest_with(lanes, mesh, ray, t_max)
+    }
+}
+
+/// Whether a query's ray meets anything, on any lanes ([`FastBvh::occluded_with`]).
+struct Occluded<'a>(Query<'a>);
+
+impl OnLanes for Occluded<'_> {
+    type Output = bool;
+
+    #[inline(always)]
+    fn on<L: LaneKind>(self, lanes: L) -> bool {
+        let Query {
+            bvh,
+            mesh,
+            ray,
+            t_max,
+        } = self.0;
+        bvh.occluded_with(lanes, mesh, ray, t_max)
     }
 }
 

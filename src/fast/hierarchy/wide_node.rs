@@ -1,9 +1,12 @@
 //! One node of the fast hierarchy: the boxes of its eight children, which a ray
 //! tests at once, eight single-precision numbers per operation where the processor
-//! has AVX (`crate::fast::simd::avx_lanes`) and as two halves of four on any other.
+//! has AVX (`crate::fast::simd::avx_eight`) and as two halves of four on any other.
 
 use crate::fast::hierarchy::triangle_group::{GroupRay, TriangleGroup};
+#[cfg(target_arch = "x86_64")]
+use crate::fast::simd::avx::Avx;
 use crate::fast::simd::float_lanes::{FloatLanes, Half, LaneSource};
+use crate::fast::simd::portable::Portable;
 use crate::geometry::Ray;
 use crate::maths::{Real, Vec3, to_single};
 
@@ -128,9 +131,6 @@ pub trait EightLanes: Copy {
 }
 
 /// The tests on any processor: eight lanes as two halves of four.
-#[derive(Clone, Copy, Debug)]
-pub struct Portable;
-
 impl EightLanes for Portable {
     #[inline(always)]
     fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
@@ -143,6 +143,22 @@ impl EightLanes for Portable {
     #[inline(always)]
     fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32 {
         group.candidates(ray)
+    }
+}
+
+/// The tests in AVX instructions, eight lanes in one register.
+#[cfg(target_arch = "x86_64")]
+impl EightLanes for Avx {
+    #[inline(always)]
+    fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
+        let mut entries = [0.0; WIDTH];
+        let mask = enters_in(self, ray, node, limit, &mut entries);
+        (mask, entries)
+    }
+
+    #[inline(always)]
+    fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32 {
+        group.candidates_in(ray, self)
     }
 }
 

@@ -1,15 +1,15 @@
 //! Beyond the course: the work at the hits of the paths followed at once, four at a
-//! time on the lanes ([`FourLanes`]): their records on spheres, their direct light
+//! time on the lanes ([`RealSource`]): their records on spheres, their direct light
 //! (a point light and its shadow rays, or samples of a sphere light), and their
 //! bounces. Each is written once for any lanes in [`shading`], the
 //! course's functions step by step, so that every number is theirs to the last bit.
 
 use crate::fast::paths::direct_at_once::{Direct, Towards};
 use crate::fast::paths::light_samples_at_once;
-use crate::fast::paths::path::{PATHS, Path, Shaded};
-use crate::fast::paths::shading::{self, vector};
+use crate::fast::paths::path::{PATHS, Path, Shaded, repeated};
+use crate::fast::paths::shading::{self, bounces, point_light, vector};
 use crate::fast::paths::sphere_lanes::SphereLanes;
-use crate::fast::simd::four_lanes::{FourLanes, repeated};
+use crate::fast::simd::real_lanes::RealSource;
 use crate::geometry::{Hit, Ray};
 use crate::lights::{Light, PointLight};
 use crate::materials::Material;
@@ -20,7 +20,9 @@ use crate::scene::Scene;
 /// `rays`, their normals facing the rays, worked out on the lanes, with their
 /// albedos, into `hits`, which stay `None` where a ray meets no sphere (a lane
 /// whose ray meets none repeats another lane's sphere).
-pub(crate) fn sphere_hits(
+#[inline(always)]
+pub(crate) fn sphere_hits<L: RealSource>(
+    lanes: L,
     scene: &Scene,
     spheres: &SphereLanes,
     rays: [&Ray; PATHS],
@@ -33,7 +35,7 @@ pub(crate) fn sphere_hits(
     let [n0, n1, n2, n3] = nearest.map(|n| n.unwrap_or(any));
     let (t, object) = ([n0.0, n1.0, n2.0, n3.0], [n0.1, n1.1, n2.1, n3.1]);
     let rows = object.map(|object| spheres.sphere(object));
-    let found = spheres.lanes().sphere_hits(rays, t, rows);
+    let found = shading::sphere_hits(lanes, rays, t, rows);
     for (k, hit) in hits.iter_mut().enumerate() {
         let sphere = &scene.spheres[object[k]];
         let Material::Diffuse { albedo } = sphere.material else {
@@ -60,7 +62,8 @@ pub(crate) fn sphere_hits(
 /// hits at once on `lanes` where the light is a point light with shadows or
 /// (session 4) a sampled sphere light, as [`Direct::at`] does it for one;
 /// otherwise by `Direct::at`.
-pub(crate) fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
+#[inline(always)]
+pub(crate) fn light_all<L: RealSource>(lanes: L, paths: &mut [Path], hits: &[Shaded; PATHS]) {
     let scene = paths[0].tracer.scene;
     match scene.light {
         Some(Light::Point(light)) if scene.settings.shadows => {
@@ -82,8 +85,9 @@ pub(crate) fn light_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PA
 
 /// The light from the point light `light` at the paths' hits, and their shadow
 /// rays, on `lanes`: `Direct::at` with a point light and shadows.
-fn point_light_all(
-    lanes: FourLanes,
+#[inline(always)]
+fn point_light_all<L: RealSource>(
+    lanes: L,
     paths: &mut [Path],
     hits: &[Shaded; PATHS],
     light: &PointLight,
@@ -92,7 +96,7 @@ fn point_light_all(
         return;
     };
     let four = [&h0.0, &h1.0, &h2.0, &h3.0];
-    let lit = lanes.point_light(four, [h0.1, h1.1, h2.1, h3.1], light);
+    let lit = point_light(lanes, four, [h0.1, h1.1, h2.1, h3.1], light);
     for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
         if hit.is_some() {
             path.tracer.rays += 1;
@@ -107,7 +111,8 @@ fn point_light_all(
 /// Takes the paths on from their hits (`hits[k]` for `paths[k]`): keeps what each
 /// hit adds, and makes the next rays of those that bounce, the four at once on
 /// `lanes`, each from its own path's random numbers.
-pub(crate) fn bounce_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; PATHS]) {
+#[inline(always)]
+pub(crate) fn bounce_all<L: RealSource>(lanes: L, paths: &mut [Path], hits: &[Shaded; PATHS]) {
     let mut samples = [None; PATHS];
     let mut bouncing = [None; PATHS];
     for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
@@ -121,8 +126,11 @@ pub(crate) fn bounce_all(lanes: FourLanes, paths: &mut [Path], hits: &[Shaded; P
         return;
     };
     let any = samples.iter().flatten().next().copied().unwrap_or_default();
-    let (origin, direction) =
-        lanes.bounces([*h0, *h1, *h2, *h3], samples.map(|s| s.unwrap_or(any)));
+    let (origin, direction) = bounces(
+        lanes,
+        [*h0, *h1, *h2, *h3],
+        samples.map(|s| s.unwrap_or(any)),
+    );
     for (k, path) in paths.iter_mut().enumerate() {
         if samples[k].is_some() {
             path.ray = shading::ray(&origin, &direction, k);

@@ -4,17 +4,21 @@
 //! [`hits_at_once`](crate::fast::paths::hits_at_once) does for a point light.
 
 use crate::fast::paths::direct_at_once::{Direct, Towards};
-use crate::fast::paths::path::{PATHS, Path, Shaded};
-use crate::fast::paths::shading::{self, vector};
-use crate::fast::simd::four_lanes::{FourLanes, repeated};
+use crate::fast::paths::path::{PATHS, Path, Shaded, repeated};
+use crate::fast::paths::shading::{self, LightSamples, spawn, to_world, vector};
+use crate::fast::simd::real_lanes::{
+    RealLanes, RealSource, column, dot, gather3, minus, scale, scatter3, splat3,
+};
+use crate::geometry::Hit;
 use crate::lights::SphereLight;
-use crate::maths::{Colour, PI, uniform_pair};
+use crate::maths::{Colour, PI, Real, Vec3, uniform_pair};
 
 /// One direction sampled towards the sphere light `light` from each of the paths'
 /// hits, its ray and the light it brings, on `lanes`: `Direct::at` with a sampled
 /// sphere light (session 4), each path drawing its own random numbers first.
-pub(crate) fn sphere_light_all(
-    lanes: FourLanes,
+#[inline(always)]
+pub(crate) fn sphere_light_all<L: RealSource>(
+    lanes: L,
     paths: &mut [Path],
     hits: &[Shaded; PATHS],
     light: &SphereLight,
@@ -32,7 +36,7 @@ pub(crate) fn sphere_light_all(
     };
     let (four, albedo) = ([&h0.0, &h1.0, &h2.0, &h3.0], [h0.1, h1.1, h2.1, h3.1]);
     let shape = (light.centre, light.radius, light.emission);
-    let found = lanes.sphere_light(four, albedo, samples, shape);
+    let found = sphere_light(lanes, four, albedo, samples, shape);
     for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
         if hit.is_none() {
             continue;
@@ -45,5 +49,63 @@ pub(crate) fn sphere_light_all(
             direct = Direct::Shadowed { ray, lit, towards };
         }
         (path.direct, path.skipped) = (Some(direct), path.tracer.sampled_light());
+    }
+}
+
+/// `Tracer::light_sample` at four hits (normals facing their rays) of surfaces of
+/// `albedo`, from each hit's `[u1, cos phi, sin phi]`, towards the sphere light of
+/// `centre`, `radius` and `emission`, on `lanes`: the cone under which the light is
+/// seen (`SphereLight::cone`), its frame, a direction in it (`Cone::sample`), its
+/// density, and the ray.
+#[inline(always)]
+pub fn sphere_light<L: RealSource>(
+    lanes: L,
+    hits: [&Hit; 4],
+    albedo: [Colour; 4],
+    samples: [[Real; 3]; 4],
+    light: (Vec3, Real, Colour),
+) -> LightSamples {
+    let (centre, radius, emission) = light;
+    let one = lanes.splat(1.0);
+    let [h0, h1, h2, h3] = hits;
+    let point = gather3(lanes, [h0.point, h1.point, h2.point, h3.point]);
+    let to_centre = minus(splat3(lanes, centre), point);
+    let r2 = dot(to_centre, to_centre);
+    let sin2 = lanes.splat(radius * radius) / r2;
+    let outside = sin2.lt(one);
+    let cos_max = (one - sin2).sqrt();
+    let one_minus_cos_max = sin2 / (one + cos_max);
+    let inverse = one / r2.sqrt();
+    let axis = scale(inverse, to_centre);
+    let u1 = column(lanes, samples, 0);
+    let cos_phi = column(lanes, samples, 1);
+    let sin_phi = column(lanes, samples, 2);
+    let one_minus_cos = u1 * one_minus_cos_max;
+    let squared = one_minus_cos * (lanes.splat(2.0) - one_minus_cos);
+    let sin_theta = squared.max(lanes.splat(0.0)).sqrt();
+    let local = [
+        cos_phi * sin_theta,
+        sin_phi * sin_theta,
+        one - one_minus_cos,
+    ];
+    let direction = to_world(lanes, axis, local);
+    let inside_cone = local[2].ge(cos_max);
+    let pdf = inside_cone & (one / (lanes.splat(2.0 * PI) * one_minus_cos_max));
+    let normal = gather3(lanes, [h0.normal, h1.normal, h2.normal, h3.normal]);
+    let cos = dot(direction, normal);
+    let kept = outside & cos.gt(lanes.splat(0.0));
+    let pi = lanes.splat(PI);
+    let ([ax, ay, az], [ex, ey, ez]) = (gather3(lanes, albedo), splat3(lanes, emission));
+    let lit = [
+        ex * ax / pi * cos / pdf,
+        ey * ay / pi * cos / pdf,
+        ez * az / pi * cos / pdf,
+    ];
+    let offset = gather3(lanes, [h0.offset, h1.offset, h2.offset, h3.offset]);
+    LightSamples {
+        lit: scatter3(lit),
+        origin: spawn(lanes, point, offset, direction),
+        direction: scatter3(direction),
+        kept: kept.to_array(),
     }
 }

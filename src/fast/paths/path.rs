@@ -13,7 +13,7 @@ use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
 
 /// How many paths one thread follows at once: one per lane of
-/// [`FourLanes`](crate::fast::simd::four_lanes::FourLanes).
+/// a kind of lanes ([`RealSource`](crate::fast::simd::real_lanes::RealSource)).
 pub const PATHS: usize = 4;
 
 /// A path's hit, facing its ray, and the albedo of the surface hit.
@@ -211,4 +211,12 @@ impl<'s> Path<'s> {
             self.start_sample();
         }
     }
+}
+
+/// The four entries of `hits`, a lane without one repeating the first that has
+/// one; `None` if none has.
+pub(crate) fn repeated<T>(hits: &[Option<T>; 4]) -> Option<[&T; 4]> {
+    let first = hits.iter().flatten().next()?;
+    let lane = |k: usize| hits[k].as_ref().unwrap_or(first);
+    Some([lane(0), lane(1), lane(2), lane(3)])
 }

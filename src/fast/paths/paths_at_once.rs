@@ -24,9 +24,11 @@
 //!
 //! [`SphereLanes::nearest_of_four`]: crate::fast::paths::sphere_lanes::SphereLanes::nearest_of_four
 
+use crate::fast::lanes::{LaneKind, OnLanes};
 use crate::fast::paths::hits_at_once::{bounce_all, light_all, sphere_hits};
 use crate::fast::paths::path::{PATHS, Path};
 use crate::fast::paths::sphere_lanes::SphereLanes;
+use crate::fast::simd::real_lanes::RealSource;
 use crate::materials::Material;
 use crate::maths::Colour;
 use crate::scene::Scene;
@@ -43,8 +45,54 @@ pub fn applies(scene: &Scene) -> bool {
 /// pixel's radiance) and `taken` (its number of samples), `PATHS` (four) pixels at a
 /// time, the next pixel starting where one
 /// is done; returns the rays traced and the samples dropped as not finite, as
-/// [`Tracer`](crate::integrator::Tracer) counts them.
+/// [`Tracer`](crate::integrator::Tracer) counts them. The row runs on the lanes
+/// that `spheres` chose, the fastest the processor has.
 pub fn row(
+    scene: &Scene,
+    spheres: &SphereLanes,
+    row: u32,
+    line: &mut [Colour],
+    taken: &mut [u32],
+) -> (u64, u64) {
+    let work = Row {
+        scene,
+        spheres,
+        row,
+        line,
+        taken,
+    };
+    spheres.lanes().run(work)
+}
+
+/// A row to render, and where its pixels go: [`row`]'s arguments.
+struct Row<'a> {
+    scene: &'a Scene,
+    spheres: &'a SphereLanes,
+    row: u32,
+    line: &'a mut [Colour],
+    taken: &'a mut [u32],
+}
+
+impl OnLanes for Row<'_> {
+    type Output = (u64, u64);
+
+    #[inline(always)]
+    fn on<L: LaneKind>(self, lanes: L) -> (u64, u64) {
+        let Row {
+            scene,
+            spheres,
+            row,
+            line,
+            taken,
+        } = self;
+        row_on(lanes, scene, spheres, row, line, taken)
+    }
+}
+
+/// [`row`] on `lanes`.
+#[inline(always)]
+fn row_on<L: RealSource>(
+    lanes: L,
     scene: &Scene,
     spheres: &SphereLanes,
     row: u32,
@@ -59,7 +107,7 @@ pub fn row(
         .collect();
     let (mut rays, mut dropped) = (0, 0);
     while !paths.is_empty() {
-        step(spheres, &mut paths);
+        step(lanes, spheres, &mut paths);
         paths.retain_mut(|path| {
             if !path.pixel_done() {
                 return true;
@@ -83,25 +131,33 @@ pub fn row(
 /// left, or a path has no shadow ray, a lane repeats another ray and its answer is
 /// not used. The work at the hits (their records, their direct light, their
 /// bounces) is done on the lanes too, each part for every path before the next.
-fn step(spheres: &SphereLanes, paths: &mut [Path]) {
+#[inline(always)]
+fn step<L: RealSource>(lanes: L, spheres: &SphereLanes, paths: &mut [Path]) {
     let last = paths.len() - 1;
     let ray = |k: usize| &paths[k.min(last)].ray;
     let rays = [ray(0), ray(1), ray(2), ray(3)];
-    let nearest = spheres.nearest_of_four(rays);
+    let nearest = spheres.nearest_of_four(lanes, rays);
     let mut hits = [None; PATHS];
-    sphere_hits(paths[0].tracer.scene, spheres, rays, nearest, &mut hits);
+    sphere_hits(
+        lanes,
+        paths[0].tracer.scene,
+        spheres,
+        rays,
+        nearest,
+        &mut hits,
+    );
     for ((path, nearest), hit) in paths.iter_mut().zip(nearest).zip(&mut hits) {
         path.hit(nearest, hit);
     }
-    light_all(spheres.lanes(), paths, &hits);
-    bounce_all(spheres.lanes(), paths, &hits);
+    light_all(lanes, paths, &hits);
+    bounce_all(lanes, paths, &hits);
     let mut shadow = [None; PATHS];
     if paths.iter().any(|path| path.shadow_ray().is_some()) {
         let ray = |k: usize| {
             let path = &paths[k.min(last)];
             path.shadow_ray().unwrap_or(&path.ray)
         };
-        shadow = spheres.nearest_of_four([ray(0), ray(1), ray(2), ray(3)]);
+        shadow = spheres.nearest_of_four(lanes, [ray(0), ray(1), ray(2), ray(3)]);
     }
     for (path, shadow) in paths.iter_mut().zip(shadow) {
         path.light(shadow);

@@ -1,6 +1,7 @@
-//! The work at four paths' hits, written once for any type of four lanes: their hit
-//! records on spheres, their direct light (a point light with its shadow rays, or a
-//! sample of a sphere light), and their cosine-weighted bounces.
+//! The work at four paths' hits, written once for any kind of lanes ([`RealSource`]):
+//! their hit records on spheres, their direct light from a point light with its
+//! shadow rays, and their cosine-weighted bounces (a sample of a sphere light is in
+//! [`light_samples_at_once`](crate::fast::paths::light_samples_at_once)).
 //!
 //! Every step is the course function's, in its order, so every number is the same
 //! to the last bit: [`Sphere::hit_at`], [`Hit::facing_the_ray`],
@@ -25,8 +26,14 @@
 //! [`Frame::to_world`]: crate::maths::frame::Frame::to_world
 //! [`one_ulp_towards`]: crate::geometry::spawn::one_ulp_towards
 
-use crate::geometry::Ray;
-use crate::maths::{Real, Vec3};
+use crate::fast::simd::real_lanes::{
+    RealLanes, RealSource, VectorLanes, abs3, column, divide, dot, gather3, minus, plus, scale,
+    scatter3, splat3,
+};
+use crate::geometry::spawn::one_ulp_towards;
+use crate::geometry::{Hit, Ray};
+use crate::lights::PointLight;
+use crate::maths::{Colour, PI, Real, Vec3, error_bound};
 
 /// Four vectors by coordinate: `v[axis][k]` is coordinate `axis` of vector `k`.
 pub type FourVectors = [[Real; 4]; 3];
@@ -92,284 +99,398 @@ pub struct LightSamples {
     pub kept: [Real; 4],
 }
 
-/// Defines `sphere_hits`, `point_light`, `sphere_light` and `bounces` in the module
-/// that invokes it, for its lane type `L` and its lane operations (those of the
-/// sphere test, and `abs`, `max`, `all`, `step_towards`), each function with the
-/// attributes given. No closure is used: one inside a function compiled with AVX is
-/// compiled without it, and called.
-macro_rules! four_hit_shading {
-    ($(#[$attribute:meta])*) => {
-        /// The three coordinates of four vectors, one vector per lane.
-        $(#[$attribute])*
-        #[inline]
-        fn gather3(v: [$crate::maths::Vec3; 4]) -> [L; 3] {
-            [
-                gather([v[0].x, v[1].x, v[2].x, v[3].x]),
-                gather([v[0].y, v[1].y, v[2].y, v[3].y]),
-                gather([v[0].z, v[1].z, v[2].z, v[3].z]),
-            ]
-        }
+// ANCHOR: to_world
+/// `Frame::new(n).to_world(local)`: the local coordinates `local` in the frame
+/// around the unit vectors `n`.
+#[inline(always)]
+pub fn to_world<L: RealSource>(
+    lanes: L,
+    n: VectorLanes<L::Four>,
+    local: VectorLanes<L::Four>,
+) -> VectorLanes<L::Four> {
+    let [nx, ny, nz] = n;
+    let one = lanes.splat(1.0);
+    let sign = (nz & lanes.splat(-0.0)) | one;
+    let a = lanes.splat(-1.0) / (sign + nz);
+    let b = nx * ny * a;
+    let t1 = [one + sign * nx * nx * a, sign * b, -sign * nx];
+    let t2 = [b, sign + ny * ny * a, -ny];
+    let [x, y, z] = local;
+    plus(plus(scale(x, t1), scale(y, t2)), scale(z, n))
+}
+// ANCHOR_END: to_world
 
-        /// The lanes of three coordinates.
-        $(#[$attribute])*
-        #[inline]
-        fn scatter3(v: [L; 3]) -> $crate::fast::paths::shading::FourVectors {
-            [lanes(v[0]), lanes(v[1]), lanes(v[2])]
-        }
-
-        /// `a . b`, glam's order: `(a_x b_x + a_y b_y) + a_z b_z`.
-        $(#[$attribute])*
-        #[inline]
-        fn dot(a: [L; 3], b: [L; 3]) -> L {
-            add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2]))
-        }
-
-        /// `s v`, lane by lane.
-        $(#[$attribute])*
-        #[inline]
-        fn scale(s: L, v: [L; 3]) -> [L; 3] {
-            [mul(s, v[0]), mul(s, v[1]), mul(s, v[2])]
-        }
-
-        /// `a + b`, lane by lane.
-        $(#[$attribute])*
-        #[inline]
-        fn plus(a: [L; 3], b: [L; 3]) -> [L; 3] {
-            [add(a[0], b[0]), add(a[1], b[1]), add(a[2], b[2])]
-        }
-
-        /// `a - b`, lane by lane.
-        $(#[$attribute])*
-        #[inline]
-        fn minus(a: [L; 3], b: [L; 3]) -> [L; 3] {
-            [sub(a[0], b[0]), sub(a[1], b[1]), sub(a[2], b[2])]
-        }
-
-        // ANCHOR: to_world
-        /// `Frame::new(n).to_world(local)`: the local coordinates `local` in the
-        /// frame around the unit vectors `n`.
-        $(#[$attribute])*
-        #[inline]
-        fn to_world(n: [L; 3], local: [L; 3]) -> [L; 3] {
-            let [nx, ny, nz] = n;
-            let sign = or(and(nz, splat(-0.0)), splat(1.0));
-            let a = div(splat(-1.0), add(sign, nz));
-            let b = mul(mul(nx, ny), a);
-            let t1 = [
-                add(splat(1.0), mul(mul(mul(sign, nx), nx), a)),
-                mul(sign, b),
-                mul(neg(sign), nx),
-            ];
-            let t2 = [b, add(sign, mul(mul(ny, ny), a)), neg(ny)];
-            let [x, y, z] = local;
-            plus(plus(scale(x, t1), scale(y, t2)), scale(z, n))
-        }
-        // ANCHOR_END: to_world
-
-        /// The lanes where `one_ulp_towards(p, o)` takes its usual case: `p` finite
-        /// and not zero, `o` not zero (a NaN `o` makes `p` NaN, so such a lane is
-        /// never usual).
-        $(#[$attribute])*
-        #[inline]
-        fn usual(p: L, o: L) -> L {
-            let finite = lt(abs(p), splat($crate::maths::Real::INFINITY));
-            and(and(ne(p, splat(0.0)), finite), ne(o, splat(0.0)))
-        }
-
-        /// The origins of rays leaving four hits (`point`, `offset`) along
-        /// `direction`: `Hit::spawn` on the lanes, the last float of each coordinate
-        /// too where every lane takes `one_ulp_towards`'s usual case (nearly
-        /// always), one number at a time otherwise.
-        $(#[$attribute])*
-        #[inline]
-        fn spawn(
-            point: [L; 3],
-            offset: [L; 3],
-            direction: [L; 3],
-        ) -> $crate::fast::paths::shading::FourVectors {
-            let away = lt(dot(direction, offset), splat(0.0));
-            let [x, y, z] = offset;
-            let offset = [
-                select(away, neg(x), x),
-                select(away, neg(y), y),
-                select(away, neg(z), z),
-            ];
-            let pushed = plus(point, offset);
-            let [px, py, pz] = pushed;
-            let [ox, oy, oz] = offset;
-            if all(and(usual(px, ox), and(usual(py, oy), usual(pz, oz)))) {
-                return scatter3([step_towards(px, ox), step_towards(py, oy), step_towards(pz, oz)]);
-            }
-            let (mut origin, offset) = (scatter3(pushed), scatter3(offset));
-            for axis in 0..3 {
-                for k in 0..4 {
-                    let p = origin[axis][k];
-                    origin[axis][k] = $crate::geometry::spawn::one_ulp_towards(p, offset[axis][k]);
-                }
-            }
-            origin
-        }
-
-        /// `Sphere::hit_at` then `Hit::facing_the_ray` for four rays, ray `k` meeting
-        /// sphere `spheres[k]` (centre and radius first) at `t[k]`.
-        $(#[$attribute])*
-        pub(crate) fn sphere_hits(
-            rays: [&$crate::geometry::Ray; 4],
-            t: [$crate::maths::Real; 4],
-            spheres: [&[$crate::maths::Real; 5]; 4],
-        ) -> $crate::fast::paths::shading::SphereHits {
-            let [r0, r1, r2, r3] = rays;
-            let origin = gather3([r0.origin, r1.origin, r2.origin, r3.origin]);
-            let direction = gather3([r0.direction, r1.direction, r2.direction, r3.direction]);
-            let [s0, s1, s2, s3] = spheres;
-            let centre = [
-                gather([s0[0], s1[0], s2[0], s3[0]]),
-                gather([s0[1], s1[1], s2[1], s3[1]]),
-                gather([s0[2], s1[2], s2[2], s3[2]]),
-            ];
-            let radius = gather([s0[3], s1[3], s2[3], s3[3]]);
-            let radial = minus(plus(origin, scale(gather(t), direction)), centre);
-            let length = sqrt(dot(radial, radial));
-            let normal = [div(radial[0], length), div(radial[1], length), div(radial[2], length)];
-            let on_sphere = scale(radius, normal);
-            let point = plus(centre, on_sphere);
-            let bound = splat($crate::maths::error_bound(7));
-            let error = scale(bound, plus(
-                [abs(centre[0]), abs(centre[1]), abs(centre[2])],
-                [abs(on_sphere[0]), abs(on_sphere[1]), abs(on_sphere[2])],
-            ));
-            let along = dot([abs(normal[0]), abs(normal[1]), abs(normal[2])], error);
-            let offset = scale(along, normal);
-            let from_centre = minus(origin, centre);
-            let outside = gt(dot(from_centre, from_centre), mul(radius, radius));
-            let facing = scale(select(outside, splat(1.0), splat(-1.0)), normal);
-            $crate::fast::paths::shading::SphereHits {
-                point: scatter3(point),
-                normal: scatter3(facing),
-                error: scatter3(error),
-                offset: scatter3(offset),
-                outside: lanes(outside),
-            }
-        }
-
-        /// `PointLight::lambert` and `Hit::spawn_towards` (towards the light) at four
-        /// hits (normals facing their rays) of surfaces of `albedo`.
-        $(#[$attribute])*
-        pub(crate) fn point_light(
-            hits: [&$crate::geometry::Hit; 4],
-            albedo: [$crate::maths::Colour; 4],
-            light: &$crate::lights::PointLight,
-        ) -> $crate::fast::paths::shading::PointLit {
-            use $crate::maths::PI;
-            let [h0, h1, h2, h3] = hits;
-            let point = gather3([h0.point, h1.point, h2.point, h3.point]);
-            let normal = gather3([h0.normal, h1.normal, h2.normal, h3.normal]);
-            let p = light.position;
-            let position = [splat(p.x), splat(p.y), splat(p.z)];
-            let to_light = minus(position, point);
-            let d2 = dot(to_light, to_light);
-            let length = sqrt(d2);
-            let [lx, ly, lz] = to_light;
-            let unit = [div(lx, length), div(ly, length), div(lz, length)];
-            let cos = max(dot(normal, unit), splat(0.0));
-            let power = mul(div(splat(light.intensity), mul(splat(4.0 * PI), d2)), cos);
-            let [ax, ay, az] = gather3(albedo);
-            let pi = splat(PI);
-            let lit = [div(mul(power, ax), pi), div(mul(power, ay), pi), div(mul(power, az), pi)];
-            let direction = scale(div(splat(1.0), length), to_light);
-            let offset = gather3([h0.offset, h1.offset, h2.offset, h3.offset]);
-            let origin = spawn(point, offset, direction);
-            let [ox, oy, oz] = origin;
-            let to_target = minus([gather(ox), gather(oy), gather(oz)], position);
-            $crate::fast::paths::shading::PointLit {
-                lit: scatter3(lit),
-                origin,
-                direction: scatter3(direction),
-                distance: lanes(sqrt(dot(to_target, to_target))),
-            }
-        }
-
-        /// `Tracer::light_sample` at four hits (normals facing their rays) of
-        /// surfaces of `albedo`, from each hit's `[u1, cos phi, sin phi]`, towards
-        /// the sphere light of `centre`, `radius` and `emission`: the cone under
-        /// which the light is seen (`SphereLight::cone`), its frame, a direction in
-        /// it (`Cone::sample`), its density, and the ray.
-        $(#[$attribute])*
-        pub(crate) fn sphere_light(
-            hits: [&$crate::geometry::Hit; 4],
-            albedo: [$crate::maths::Colour; 4],
-            samples: [[$crate::maths::Real; 3]; 4],
-            light: ($crate::maths::Vec3, $crate::maths::Real, $crate::maths::Colour),
-        ) -> $crate::fast::paths::shading::LightSamples {
-            use $crate::maths::PI;
-            let (centre, radius, emission) = light;
-            let [h0, h1, h2, h3] = hits;
-            let point = gather3([h0.point, h1.point, h2.point, h3.point]);
-            let to_centre = minus([splat(centre.x), splat(centre.y), splat(centre.z)], point);
-            let r2 = dot(to_centre, to_centre);
-            let sin2 = div(splat(radius * radius), r2);
-            let outside = lt(sin2, splat(1.0));
-            let cos_max = sqrt(sub(splat(1.0), sin2));
-            let one_minus_cos_max = div(sin2, add(splat(1.0), cos_max));
-            let [cx, cy, cz] = to_centre;
-            let inverse = div(splat(1.0), sqrt(r2));
-            let axis = [mul(cx, inverse), mul(cy, inverse), mul(cz, inverse)];
-            let [s0, s1, s2, s3] = samples;
-            let u1 = gather([s0[0], s1[0], s2[0], s3[0]]);
-            let cos_phi = gather([s0[1], s1[1], s2[1], s3[1]]);
-            let sin_phi = gather([s0[2], s1[2], s2[2], s3[2]]);
-            let one_minus_cos = mul(u1, one_minus_cos_max);
-            let squared = mul(one_minus_cos, sub(splat(2.0), one_minus_cos));
-            let sin_theta = sqrt(max(squared, splat(0.0)));
-            let local = [
-                mul(cos_phi, sin_theta),
-                mul(sin_phi, sin_theta),
-                sub(splat(1.0), one_minus_cos),
-            ];
-            let direction = to_world(axis, local);
-            let inside_cone = ge(local[2], cos_max);
-            let pdf = and(inside_cone, div(splat(1.0), mul(splat(2.0 * PI), one_minus_cos_max)));
-            let normal = gather3([h0.normal, h1.normal, h2.normal, h3.normal]);
-            let cos = dot(direction, normal);
-            let kept = and(outside, gt(cos, splat(0.0)));
-            let [ax, ay, az] = gather3(albedo);
-            let pi = splat(PI);
-            let lit = [
-                div(mul(div(mul(splat(emission.x), ax), pi), cos), pdf),
-                div(mul(div(mul(splat(emission.y), ay), pi), cos), pdf),
-                div(mul(div(mul(splat(emission.z), az), pi), cos), pdf),
-            ];
-            let offset = gather3([h0.offset, h1.offset, h2.offset, h3.offset]);
-            $crate::fast::paths::shading::LightSamples {
-                lit: scatter3(lit),
-                origin: spawn(point, offset, direction),
-                direction: scatter3(direction),
-                kept: lanes(kept),
-            }
-        }
-
-        /// The cosine-weighted bounces of four hits (normals facing their rays):
-        /// `sample_cosine_hemisphere` from each sample's `[cos phi, sin phi, u2]`,
-        /// turned into the frame of the normal and spawned from the hit; the rays'
-        /// origins and directions.
-        $(#[$attribute])*
-        pub(crate) fn bounces(
-            hits: [&$crate::geometry::Hit; 4],
-            samples: [[$crate::maths::Real; 3]; 4],
-        ) -> ($crate::fast::paths::shading::FourVectors, $crate::fast::paths::shading::FourVectors) {
-            let [s0, s1, s2, s3] = samples;
-            let cos_phi = gather([s0[0], s1[0], s2[0], s3[0]]);
-            let sin_phi = gather([s0[1], s1[1], s2[1], s3[1]]);
-            let u2 = gather([s0[2], s1[2], s2[2], s3[2]]);
-            let r = sqrt(sub(splat(1.0), u2));
-            let local = [mul(cos_phi, r), mul(sin_phi, r), sqrt(u2)];
-            let [h0, h1, h2, h3] = hits;
-            let direction = to_world(gather3([h0.normal, h1.normal, h2.normal, h3.normal]), local);
-            let point = gather3([h0.point, h1.point, h2.point, h3.point]);
-            let offset = gather3([h0.offset, h1.offset, h2.offset, h3.offset]);
-            (spawn(point, offset, direction), scatter3(direction))
-        }
-    };
+/// The lanes where `one_ulp_towards(p, o)` takes its usual case: `p` finite and
+/// not zero, `o` not zero (a NaN `o` makes `p` NaN, so such a lane is never usual).
+#[inline(always)]
+fn usual<L: RealSource>(lanes: L, p: L::Four, o: L::Four) -> L::Four {
+    let zero = lanes.splat(0.0);
+    let finite = p.abs().lt(lanes.splat(Real::INFINITY));
+    p.ne(zero) & finite & o.ne(zero)
 }
 
-pub(crate) use four_hit_shading;
+/// The origins of rays leaving four hits (`point`, `offset`) along `direction`:
+/// `Hit::spawn` on the lanes, the last float of each coordinate too where every
+/// lane takes `one_ulp_towards`'s usual case (nearly always), one number at a time
+/// otherwise.
+#[inline(always)]
+pub fn spawn<L: RealSource>(
+    lanes: L,
+    point: VectorLanes<L::Four>,
+    offset: VectorLanes<L::Four>,
+    direction: VectorLanes<L::Four>,
+) -> FourVectors {
+    let away = dot(direction, offset).lt(lanes.splat(0.0));
+    let [x, y, z] = offset;
+    let offset = [away.select(-x, x), away.select(-y, y), away.select(-z, z)];
+    let pushed = plus(point, offset);
+    let ([px, py, pz], [ox, oy, oz]) = (pushed, offset);
+    let usual = usual(lanes, px, ox) & usual(lanes, py, oy) & usual(lanes, pz, oz);
+    if usual.all() {
+        return scatter3([
+            px.step_towards(ox),
+            py.step_towards(oy),
+            pz.step_towards(oz),
+        ]);
+    }
+    let (mut origin, offset) = (scatter3(pushed), scatter3(offset));
+    for (origin, offset) in origin.iter_mut().zip(offset) {
+        for (p, o) in origin.iter_mut().zip(offset) {
+            *p = one_ulp_towards(*p, o);
+        }
+    }
+    origin
+}
+
+/// `Sphere::hit_at` then `Hit::facing_the_ray` for four rays, ray `k` meeting
+/// sphere `spheres[k]` (centre and radius first) at `t[k]`, on `lanes`.
+#[inline(always)]
+pub fn sphere_hits<L: RealSource>(
+    lanes: L,
+    rays: [&Ray; 4],
+    t: [Real; 4],
+    spheres: [&[Real; 5]; 4],
+) -> SphereHits {
+    let [r0, r1, r2, r3] = rays;
+    let origin = gather3(lanes, [r0.origin, r1.origin, r2.origin, r3.origin]);
+    let direction = gather3(
+        lanes,
+        [r0.direction, r1.direction, r2.direction, r3.direction],
+    );
+    let rows = [*spheres[0], *spheres[1], *spheres[2], *spheres[3]];
+    let centre = [
+        column(lanes, rows, 0),
+        column(lanes, rows, 1),
+        column(lanes, rows, 2),
+    ];
+    let radius = column(lanes, rows, 3);
+    let radial = minus(plus(origin, scale(lanes.gather(t), direction)), centre);
+    let length = dot(radial, radial).sqrt();
+    let normal = divide(radial, length);
+    let on_sphere = scale(radius, normal);
+    let point = plus(centre, on_sphere);
+    let bound = lanes.splat(error_bound(7));
+    let error = scale(bound, plus(abs3(centre), abs3(on_sphere)));
+    let offset = scale(dot(abs3(normal), error), normal);
+    let from_centre = minus(origin, centre);
+    let outside = dot(from_centre, from_centre).gt(radius * radius);
+    let facing = scale(outside.select(lanes.splat(1.0), lanes.splat(-1.0)), normal);
+    SphereHits {
+        point: scatter3(point),
+        normal: scatter3(facing),
+        error: scatter3(error),
+        offset: scatter3(offset),
+        outside: outside.to_array(),
+    }
+}
+
+/// `PointLight::lambert` and `Hit::spawn_towards` (towards the light) at four hits
+/// (normals facing their rays) of surfaces of `albedo`, on `lanes`.
+#[inline(always)]
+pub fn point_light<L: RealSource>(
+    lanes: L,
+    hits: [&Hit; 4],
+    albedo: [Colour; 4],
+    light: &PointLight,
+) -> PointLit {
+    let [h0, h1, h2, h3] = hits;
+    let point = gather3(lanes, [h0.point, h1.point, h2.point, h3.point]);
+    let normal = gather3(lanes, [h0.normal, h1.normal, h2.normal, h3.normal]);
+    let position = splat3(lanes, light.position);
+    let to_light = minus(position, point);
+    let d2 = dot(to_light, to_light);
+    let length = d2.sqrt();
+    let cos = dot(normal, divide(to_light, length)).max(lanes.splat(0.0));
+    let power = lanes.splat(light.intensity) / (lanes.splat(4.0 * PI) * d2) * cos;
+    let pi = lanes.splat(PI);
+    let [ax, ay, az] = gather3(lanes, albedo);
+    let lit = [power * ax / pi, power * ay / pi, power * az / pi];
+    let direction = scale(lanes.splat(1.0) / length, to_light);
+    let offset = gather3(lanes, [h0.offset, h1.offset, h2.offset, h3.offset]);
+    let origin = spawn(lanes, point, offset, direction);
+    let [ox, oy, oz] = origin;
+    let to_target = minus(
+        [lanes.gather(ox), lanes.gather(oy), lanes.gather(oz)],
+        position,
+    );
+    PointLit {
+        lit: scatter3(lit),
+        origin,
+        direction: scatter3(direction),
+        distance: dot(to_target, to_target).sqrt().to_array(),
+    }
+}
+
+/// The cosine-weighted bounces of four hits (normals facing their rays), on
+/// `lanes`: `sample_cosine_hemisphere` from each sample's `[cos phi, sin phi, u2]`,
+/// turned into the frame of the normal and spawned from the hit; the rays' origins
+/// and directions.
+#[inline(always)]
+pub fn bounces<L: RealSource>(
+    lanes: L,
+    hits: [&Hit; 4],
+    samples: [[Real; 3]; 4],
+) -> (FourVectors, FourVectors) {
+    let cos_phi = column(lanes, samples, 0);
+    let sin_phi = column(lanes, samples, 1);
+    let u2 = column(lanes, samples, 2);
+    let r = (lanes.splat(1.0) - u2).sqrt();
+    let local = [cos_phi * r, sin_phi * r, u2.sqrt()];
+    let [h0, h1, h2, h3] = hits;
+    let normal = gather3(lanes, [h0.normal, h1.normal, h2.normal, h3.normal]);
+    let direction = to_world(lanes, normal, local);
+    let point = gather3(lanes, [h0.point, h1.point, h2.point, h3.point]);
+    let offset = gather3(lanes, [h0.offset, h1.offset, h2.offset, h3.offset]);
+    (spawn(lanes, point, offset, direction), scatter3(direction))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Scene;
+    use crate::fast::paths::sphere_lanes::SphereLanes;
+    #[cfg(target_arch = "x86_64")]
+    use crate::fast::simd::avx::Avx;
+    use crate::fast::simd::portable::Portable;
+    use crate::geometry::Sphere;
+    use crate::materials::Material;
+    use crate::maths::frame::Frame;
+    use crate::maths::sampling::sample_cosine_hemisphere;
+    use crate::maths::{PixelRng, pixel_rng, uniform};
+
+    /// The room of the sphere stages with a ball in it, and a ball the rays start
+    /// inside.
+    fn scene() -> Scene {
+        let sphere = |centre: Vec3, radius: Real| Sphere {
+            centre,
+            radius,
+            material: Material::Diffuse {
+                albedo: Colour::ONE,
+            },
+            emission: Colour::ZERO,
+        };
+        let wall = |axis: Vec3, radius: Real| sphere(1000.0 * axis, radius);
+        let spheres = vec![
+            sphere(Vec3::ZERO, 10.0),
+            sphere(Vec3::new(20.0, -5.0, 3.0), 30.0),
+            wall(-Vec3::Y, 990.0),
+            wall(Vec3::Y, 940.0),
+            wall(-Vec3::X, 940.0),
+            wall(Vec3::X, 940.0),
+            wall(-Vec3::Z, 940.0),
+            wall(Vec3::Z, 940.0),
+        ];
+        Scene::new(Default::default(), spheres, None, Default::default())
+    }
+
+    /// A random point of the room.
+    fn point(rng: &mut PixelRng) -> Vec3 {
+        let mut u = || 110.0 * uniform(rng) - 55.0;
+        Vec3::new(u(), u(), u())
+    }
+
+    /// The bits of `v`'s coordinates: equal bits are the same number to the last
+    /// bit, the sign of a zero included.
+    fn bits(v: Vec3) -> [impl PartialEq + std::fmt::Debug; 3] {
+        v.to_array().map(Real::to_bits)
+    }
+
+    /// Four rays and their nearest spheres' distances and indices.
+    type Four = ([Ray; 4], [(Real, usize); 4]);
+
+    /// 4,000 rays between random points of the room, in fours, with their nearest
+    /// spheres (every ray meets a wall).
+    fn fours(scene: &Scene) -> Vec<Four> {
+        let mut rng = pixel_rng(12, 0);
+        (0..1000)
+            .map(|_| {
+                let rays: [Ray; 4] = std::array::from_fn(|_| {
+                    let origin = point(&mut rng);
+                    let direction = (point(&mut rng) - origin).normalize();
+                    Ray { origin, direction }
+                });
+                let nearest = rays.map(|ray| scene.nearest_sphere(&ray).expect("a wall"));
+                (rays, nearest)
+            })
+            .collect()
+    }
+
+    /// The course's hit records of four rays, facing the rays.
+    fn course_hits(scene: &Scene, rays: &[Ray; 4], nearest: [(Real, usize); 4]) -> [Hit; 4] {
+        std::array::from_fn(|k| {
+            let (t, object) = nearest[k];
+            scene.spheres[object]
+                .hit_at(&rays[k], t, object)
+                .facing_the_ray()
+        })
+    }
+
+    /// Asserts that `lanes` give every number of the course's hit records, direct
+    /// light and bounces to the last bit.
+    fn agrees_with_the_course(lanes: impl RealSource) {
+        let scene = scene();
+        let rows = SphereLanes::new(&scene.spheres);
+        let light = PointLight {
+            position: Vec3::new(-10.0, 20.0, 40.0),
+            intensity: 2e10,
+        };
+        let mut rng = pixel_rng(13, 0);
+        for (rays, nearest) in fours(&scene) {
+            let expected = course_hits(&scene, &rays, nearest);
+            let found = sphere_hits(
+                lanes,
+                [&rays[0], &rays[1], &rays[2], &rays[3]],
+                nearest.map(|n| n.0),
+                nearest.map(|n| rows.sphere(n.1)),
+            );
+            for (k, hit) in expected.iter().enumerate() {
+                assert_eq!(bits(vector(&found.point, k)), bits(hit.point));
+                assert_eq!(bits(vector(&found.normal, k)), bits(hit.normal));
+                assert_eq!(bits(vector(&found.error, k)), bits(hit.error));
+                assert_eq!(bits(vector(&found.offset, k)), bits(hit.offset));
+                assert_eq!(found.outside[k].to_bits() != 0, hit.from_outside);
+            }
+            let hits = [&expected[0], &expected[1], &expected[2], &expected[3]];
+            let albedo = std::array::from_fn(|_| Vec3::new(uniform(&mut rng), 0.5, 1.0));
+            let lit = point_light(lanes, hits, albedo, &light);
+            let samples: [[Real; 2]; 4] =
+                std::array::from_fn(|_| [uniform(&mut rng), uniform(&mut rng)]);
+            let phi = samples.map(|[u1, _]| 2.0 * PI * u1);
+            let with_angles = std::array::from_fn(|k| [phi[k].cos(), phi[k].sin(), samples[k][1]]);
+            let (origin, direction) = bounces(lanes, hits, with_angles);
+            for (k, hit) in expected.iter().enumerate() {
+                let (shadow, distance) = hit.spawn_towards(light.position);
+                let lambert = light.lambert(hit.point, hit.normal, albedo[k]);
+                assert_eq!(bits(vector(&lit.lit, k)), bits(lambert));
+                assert_eq!(bits(vector(&lit.origin, k)), bits(shadow.origin));
+                assert_eq!(bits(vector(&lit.direction, k)), bits(shadow.direction));
+                assert_eq!(lit.distance[k].to_bits(), distance.to_bits());
+                let [u1, u2] = samples[k];
+                let bounce = Frame::new(hit.normal).to_world(sample_cosine_hemisphere(u1, u2));
+                assert_eq!(bits(vector(&direction, k)), bits(bounce));
+                assert_eq!(bits(vector(&origin, k)), bits(hit.spawn(bounce).origin));
+            }
+        }
+    }
+
+    #[test]
+    fn the_portable_lanes_shade_as_the_course_to_the_last_bit() {
+        agrees_with_the_course(Portable);
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn the_avx_lanes_shade_as_the_course_to_the_last_bit() {
+        if let Some(avx) = Avx::detect() {
+            agrees_with_the_course(avx);
+        }
+    }
+
+    /// Asserts that `lanes` spawn the course's origins where a coordinate of a hit
+    /// or of its offset is zero or NaN, the cases `one_ulp_towards` takes one number
+    /// at a time.
+    fn spawn_as_the_course_in_the_rare_cases(lanes: impl RealSource) {
+        let scene = scene();
+        let (rays, nearest) = fours(&scene)[0];
+        let mut hits = course_hits(&scene, &rays, nearest);
+        hits[1].point.x = 0.0;
+        hits[2].offset.y = 0.0;
+        hits[3].offset.z = Real::NAN;
+        let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
+        let (origin, direction) = bounces(lanes, four, [[0.6, 0.8, 0.3]; 4]);
+        for (k, hit) in hits.iter().enumerate() {
+            let course = hit.spawn(vector(&direction, k)).origin;
+            assert_eq!(bits(vector(&origin, k)), bits(course));
+        }
+    }
+
+    #[test]
+    fn origins_in_the_rare_cases_are_the_courses() {
+        spawn_as_the_course_in_the_rare_cases(Portable);
+        #[cfg(target_arch = "x86_64")]
+        if let Some(avx) = Avx::detect() {
+            spawn_as_the_course_in_the_rare_cases(avx);
+        }
+    }
+
+    /// The light samples of a sphere light, from session 4.
+    mod light_samples {
+        use super::*;
+        use crate::fast::paths::light_samples_at_once::sphere_light;
+        use crate::integrator::Tracer;
+        use crate::lights::SphereLight;
+        use crate::maths::uniform_pair;
+
+        /// Asserts that `lanes` draw the course's light samples towards a sphere light
+        /// to the last bit, rays and their absence included, from points inside the
+        /// light too.
+        fn sample_the_light_as_the_course(lanes: impl RealSource) {
+            let scene = scene();
+            // Around the second ball, so that the rays from its surface start inside.
+            let light = SphereLight::new(Vec3::new(20.0, -5.0, 3.0), 35.0, 2e10, 0);
+            let mut tracer = Tracer::new(&scene);
+            let (mut kept, mut rays, mut inside) = (0, 0, 0);
+            for (rays_of_four, nearest) in fours(&scene) {
+                let hits = course_hits(&scene, &rays_of_four, nearest);
+                let albedo = [Vec3::new(1.0, 0.5, 0.25); 4];
+                let mut samples = [[0.0; 3]; 4];
+                let mut expected = Vec::new();
+                for (hit, sample) in hits.iter().zip(&mut samples) {
+                    let (u1, u2) = uniform_pair(&mut tracer.rng.clone());
+                    let phi = 2.0 * PI * u2;
+                    *sample = [u1, phi.cos(), phi.sin()];
+                    expected.push(tracer.light_sample(&light, hit, albedo[0]));
+                    inside += usize::from(light.cone(hit.point).is_none());
+                }
+                let shape = (light.centre, light.radius, light.emission);
+                let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
+                let found = sphere_light(lanes, four, albedo, samples, shape);
+                for (k, expected) in expected.iter().enumerate() {
+                    let ray = (found.kept[k].to_bits() != 0).then(|| {
+                        let (origin, direction) =
+                            (vector(&found.origin, k), vector(&found.direction, k));
+                        [bits(origin), bits(direction), bits(vector(&found.lit, k))]
+                    });
+                    let expected = expected
+                        .map(|(ray, lit)| [bits(ray.origin), bits(ray.direction), bits(lit)]);
+                    assert_eq!(ray, expected);
+                    kept += usize::from(ray.is_some());
+                }
+                rays += 4;
+            }
+            // Many directions lie below their surfaces, and some points are inside the
+            // light: lanes with and without a ray are tested.
+            assert!(kept > rays / 4 && kept < rays * 3 / 4, "{kept} of {rays}");
+            assert!(inside > 100, "{inside} points inside the light");
+        }
+
+        #[test]
+        fn both_lanes_sample_the_light_as_the_course_to_the_last_bit() {
+            sample_the_light_as_the_course(Portable);
+            #[cfg(target_arch = "x86_64")]
+            if let Some(avx) = Avx::detect() {
+                sample_the_light_as_the_course(avx);
+            }
+        }
+    }
+}

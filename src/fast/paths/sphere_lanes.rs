@@ -1,10 +1,14 @@
 //! A scene's spheres ready for the four-ray test, and the nearest sphere of each of
 //! four rays: what [`Scene::nearest_sphere`](crate::scene::Scene::nearest_sphere)
 //! finds for one ray, for four paths followed at once.
+//!
+//! The test is [`Sphere::intersect`](crate::geometry::Sphere::intersect)'s, step
+//! by step in the same order, on four lanes of a SIMD register (one ray per lane),
+//! so every distance is the same number to the last bit. It is written once for
+//! any kind of lanes ([`RealSource`]), with the usual operators.
 
-use crate::fast::simd::four_lanes::FourLanes;
-#[cfg(test)]
-use crate::fast::simd::portable;
+use crate::fast::lanes::Lanes;
+use crate::fast::simd::real_lanes::{RealLanes, RealSource, VectorLanes, gather3};
 use crate::geometry::{Ray, Sphere};
 use crate::maths::Real;
 
@@ -14,7 +18,7 @@ use crate::maths::Real;
 pub struct SphereLanes {
     spheres: Vec<[Real; 5]>,
     /// The fastest lanes of the processor (asked once, when the lanes are made).
-    lanes: FourLanes,
+    lanes: Lanes,
 }
 
 impl SphereLanes {
@@ -26,12 +30,12 @@ impl SphereLanes {
         };
         SphereLanes {
             spheres: spheres.iter().enumerate().map(row).collect(),
-            lanes: FourLanes::fastest(),
+            lanes: Lanes::fastest(),
         }
     }
 
-    /// The lanes the tests run on, for the shading of the same paths.
-    pub fn lanes(&self) -> FourLanes {
+    /// The lanes the paths' tests and shading run on.
+    pub fn lanes(&self) -> Lanes {
         self.lanes
     }
 
@@ -40,20 +44,97 @@ impl SphereLanes {
         &self.spheres[index]
     }
 
-    /// For each of four rays, the distance to the nearest sphere it hits and that
+    /// For each of four `rays`, the distance to the nearest sphere it hits and that
     /// sphere's index, the first sphere on a tie: the course's loop for four rays at
-    /// once, to the last bit, with AVX where the processor has it.
-    pub fn nearest_of_four(&self, rays: [&Ray; 4]) -> [Option<(Real, usize)>; 4] {
-        self.lanes.nearest_of_four(&self.spheres, rays)
+    /// once, on `lanes`, to the last bit. Each sphere is tested against the four
+    /// rays at once (`meet`); a strict `<` keeps the first sphere on a tie, as the
+    /// course's loop does.
+    #[inline(always)]
+    pub fn nearest_of_four<L: RealSource>(
+        &self,
+        lanes: L,
+        rays: [&Ray; 4],
+    ) -> [Option<(Real, usize)>; 4] {
+        let [r0, r1, r2, r3] = rays;
+        let origin = gather3(lanes, [r0.origin, r1.origin, r2.origin, r3.origin]);
+        let direction = gather3(
+            lanes,
+            [r0.direction, r1.direction, r2.direction, r3.direction],
+        );
+        let mut nearest = lanes.splat(Real::INFINITY);
+        let mut which = lanes.splat(0.0);
+        for &[x, y, z, radius, index] in &self.spheres {
+            let centre = [lanes.splat(x), lanes.splat(y), lanes.splat(z)];
+            let t = meet(lanes, origin, direction, centre, lanes.splat(radius));
+            let closer = t.lt(nearest);
+            nearest = closer.select(t, nearest);
+            which = closer.select(lanes.splat(index), which);
+        }
+        let (t, which) = (nearest.to_array(), which.to_array());
+        [
+            found(t[0], which[0]),
+            found(t[1], which[1]),
+            found(t[2], which[2]),
+            found(t[3], which[3]),
+        ]
     }
+}
+
+// ANCHOR: meet
+/// For each of four lanes, the smallest `t > 0` at which the ray from `origin` along
+/// the unit vector `direction` meets the sphere of `centre` and `radius`, or
+/// infinity: `Sphere::intersect` on four pairs at once. Every lane computes every
+/// step, whether or not its sphere is missed early (a negative discriminant gives a
+/// NaN root, a zero `mu` an infinite root); the misses are picked out at the end.
+#[inline(always)]
+fn meet<L: RealSource>(
+    lanes: L,
+    origin: VectorLanes<L::Four>,
+    direction: VectorLanes<L::Four>,
+    centre: VectorLanes<L::Four>,
+    radius: L::Four,
+) -> L::Four {
+    let [dx, dy, dz] = direction;
+    let zero = lanes.splat(0.0);
+    // s = O - C, s.d, and c = |s|^2 - R^2.
+    let (sx, sy, sz) = (
+        origin[0] - centre[0],
+        origin[1] - centre[1],
+        origin[2] - centre[2],
+    );
+    let sd = sx * dx + sy * dy + sz * dz;
+    let r2 = radius * radius;
+    let c = sx * sx + sy * sy + sz * sz - r2;
+    // The discriminant R^2 - |s - (s.d) d|^2, without cancellation.
+    let (mx, my, mz) = (sx - sd * dx, sy - sd * dy, sz - sd * dz);
+    let discriminant = r2 - (mx * mx + my * my + mz * mz);
+    // mu = -(s.d + copysign(sqrt(discriminant), s.d)); the roots mu and c / mu.
+    let root = discriminant.sqrt() | (sd & lanes.splat(-0.0));
+    let mu = -(sd + root);
+    let t0 = c / mu;
+    let before = t0.lt(mu);
+    let (near, far) = (before.select(t0, mu), before.select(mu, t0));
+    let t = near.gt(zero).select(near, far);
+    let away = c.gt(zero) & sd.gt(zero);
+    let valid = discriminant.ge(zero) & (mu.ne(zero) & far.gt(zero));
+    away.and_not(valid).select(t, lanes.splat(Real::INFINITY))
+}
+// ANCHOR_END: meet
+
+/// A lane's answer: the distance `t` and the sphere whose index has the bits of
+/// `which`, or `None` where `t` is infinite (no sphere met).
+#[inline(always)]
+fn found(t: Real, which: Real) -> Option<(Real, usize)> {
+    (t < Real::INFINITY).then_some((t, which.to_bits() as usize))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::Scene;
-    #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+    #[cfg(target_arch = "x86_64")]
     use crate::fast::simd::avx::Avx;
+    use crate::fast::simd::portable::Portable;
     use crate::materials::Material;
     use crate::maths::{Colour, Vec3, pixel_rng, uniform};
 
@@ -107,11 +188,9 @@ mod tests {
         rays
     }
 
-    /// Asserts that `nearest_of_four` finds, for every ray, the course loop's sphere
-    /// and distance to the last bit.
-    fn agrees_with_the_course(
-        nearest_of_four: impl Fn(&[[Real; 5]], [&Ray; 4]) -> [Option<(Real, usize)>; 4],
-    ) {
+    /// Asserts that `lanes` find, for every ray, the course loop's sphere and
+    /// distance to the last bit.
+    fn agrees_with_the_course(lanes: impl RealSource) {
         let spheres = spheres();
         let scene = Scene::new(
             Default::default(),
@@ -119,12 +198,12 @@ mod tests {
             None,
             Default::default(),
         );
-        let lanes = SphereLanes::new(&spheres);
+        let rows = SphereLanes::new(&spheres);
         let rays = rays();
         let mut hits = 0;
         for four in rays.chunks(4) {
             let ray = |k: usize| &four[k.min(four.len() - 1)];
-            let found = nearest_of_four(&lanes.spheres, [ray(0), ray(1), ray(2), ray(3)]);
+            let found = rows.nearest_of_four(lanes, [ray(0), ray(1), ray(2), ray(3)]);
             for (ray, found) in four.iter().zip(found) {
                 let expected = scene.nearest_sphere(ray);
                 hits += usize::from(expected.is_some());
@@ -136,14 +215,14 @@ mod tests {
 
     #[test]
     fn the_portable_lanes_find_the_course_loops_sphere_to_the_last_bit() {
-        agrees_with_the_course(portable::nearest_of_four);
+        agrees_with_the_course(Portable);
     }
 
-    #[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+    #[cfg(target_arch = "x86_64")]
     #[test]
     fn the_avx_lanes_find_the_course_loops_sphere_to_the_last_bit() {
         if let Some(avx) = Avx::detect() {
-            agrees_with_the_course(|spheres, rays| avx.nearest_of_four(spheres, rays));
+            agrees_with_the_course(avx);
         }
     }
 
@@ -153,7 +232,7 @@ mod tests {
             origin: Vec3::new(3.0, 2.0, 9.0),
             direction: -Vec3::Z,
         };
-        let found = SphereLanes::new(&spheres()).nearest_of_four([&ray; 4]);
+        let found = SphereLanes::new(&spheres()).nearest_of_four(Portable, [&ray; 4]);
         assert!(found.iter().all(|n| n.map(|n| n.1) == Some(4)), "{found:?}");
     }
 }

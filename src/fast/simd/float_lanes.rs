@@ -1,7 +1,7 @@
 //! Single-precision numbers side by side in a SIMD register, as one type: the
 //! operations the fast hierarchy's slab test and triangle pre-test need, so that
 //! each is written once for four lanes on any processor (glam's `Vec4`) and for
-//! eight in AVX (`crate::fast::simd::avx_lanes`).
+//! eight in AVX (`crate::fast::simd::avx_eight`).
 
 use std::ops::{Add, BitAnd, BitOr, Mul, Neg, Sub};
 

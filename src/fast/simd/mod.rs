@@ -1,20 +1,26 @@
 //! The lanes the fast engine computes on: one operation on several numbers at once
-//! (SIMD), on any processor and in AVX instructions on the x86-64 ones that have them.
+//! (SIMD), on any processor and in AVX instructions on the x86-64 ones that have
+//! them. Each kind of lanes is a type (`Portable`, or `Avx`, the proof that the
+//! processor has AVX), and the work on lanes is written once, generic over it, with
+//! the usual operators: four [`Real`](crate::maths::Real) lanes for the paths
+//! followed at once ([`real_lanes`]), eight `f32` lanes for the hierarchy's tests
+//! ([`float_lanes`]).
 //!
-//! | file | what it holds | in place of |
-//! |---|---|---|
-//! | [`lanes`] | the four-ray sphere test, written once for any type of lanes | `Sphere::intersect` |
-//! | [`portable`] | its lanes on any processor (the `wide` crate) | |
-//! | `avx` | its lanes in AVX instructions, on x86-64 | |
-//! | [`four_lanes`] | the choice of AVX or portable lanes for the sphere test (`lanes`) and the shading (`shading`) | |
-//! | [`float_lanes`] | `f32` lanes as one type, for the triangle groups' test | |
-//! | `avx_lanes` | the boxes' and triangles' tests in AVX instructions, on x86-64 | |
+//! | file | what it holds |
+//! |---|---|
+//! | [`real_lanes`] | four `Real` numbers as one type ([`real_lanes::RealLanes`]), and the kinds of lanes that make them |
+//! | [`float_lanes`] | `f32` lanes as one type ([`float_lanes::FloatLanes`]), and where they are loaded from |
+//! | [`portable`] | the lanes of any processor: the `wide` crate's four numbers, and eight as two halves of four |
+//! | `avx` | the proof that the processor has AVX, from which alone AVX's lanes are made |
+//! | `avx_four` | four `f64` in one AVX register |
+//! | `avx_eight` | eight `f32` in one AVX register |
 
-#[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+#[cfg(target_arch = "x86_64")]
 pub mod avx;
 #[cfg(target_arch = "x86_64")]
-pub mod avx_lanes;
+pub mod avx_eight;
+#[cfg(all(target_arch = "x86_64", not(feature = "f32")))]
+pub mod avx_four;
 pub mod float_lanes;
-pub mod four_lanes;
-pub mod lanes;
 pub mod portable;
+pub mod real_lanes;

@@ -1,138 +1,115 @@
-//! The four-ray sphere test and the four hits' shading on any processor: the lanes
-//! of the `wide` crate, which uses the SIMD instructions the build targets (two
-//! `f64` per instruction on any x86-64) and plain arithmetic elsewhere.
+//! The lanes of any processor: four [`Real`] numbers in the `wide` crate's type,
+//! which uses the SIMD instructions the build targets (two `f64` per instruction
+//! on any x86-64) and plain arithmetic elsewhere.
 
-use crate::fast::paths::shading::four_hit_shading;
-use crate::fast::simd::lanes::four_ray_sphere_test;
+use crate::fast::simd::real_lanes::{RealLanes, RealSource};
 use crate::maths::Real;
 
-/// Four [`Real`] numbers, one per lane.
-#[cfg(not(feature = "f32"))]
-type L = wide::f64x4;
-/// Four [`Real`] numbers, one per lane.
-#[cfg(feature = "f32")]
-type L = wide::f32x4;
+/// The lanes of any processor, for the four paths followed at once (four [`Real`]
+/// lanes, [`RealSource`]) and for the fast hierarchy's tests (eight `f32` lanes as
+/// two halves of four, `EightLanes`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Portable;
 
-/// `x` in every lane.
-#[inline]
-fn splat(x: Real) -> L {
-    L::splat(x)
-}
-/// The four numbers of `values`, one per lane.
-#[inline]
-fn gather(values: [Real; 4]) -> L {
-    L::from(values)
-}
-/// The four numbers of `v`.
-#[inline]
-fn lanes(v: L) -> [Real; 4] {
-    v.to_array()
-}
-/// `a + b`, lane by lane.
-#[inline]
-fn add(a: L, b: L) -> L {
-    a + b
-}
-/// `a - b`, lane by lane.
-#[inline]
-fn sub(a: L, b: L) -> L {
-    a - b
-}
-/// `a * b`, lane by lane.
-#[inline]
-fn mul(a: L, b: L) -> L {
-    a * b
-}
-/// `a / b`, lane by lane.
-#[inline]
-fn div(a: L, b: L) -> L {
-    a / b
-}
-/// `-a`, lane by lane (the sign bit flipped).
-#[inline]
-fn neg(a: L) -> L {
-    -a
-}
-/// The square root of `a`, lane by lane.
-#[inline]
-fn sqrt(a: L) -> L {
-    a.sqrt()
-}
-/// `|a|`, lane by lane (the sign bit cleared).
-#[inline]
-fn abs(a: L) -> L {
-    a.abs()
-}
-/// The larger of `a` and `b`, lane by lane; `b` where `a` is NaN.
-#[inline]
-fn max(a: L, b: L) -> L {
-    a.max(b)
-}
-/// The bits of `a` or those of `b`.
-#[inline]
-fn or(a: L, b: L) -> L {
-    a | b
-}
-/// The bits of `a` and those of `b`.
-#[inline]
-fn and(a: L, b: L) -> L {
-    a & b
-}
-/// The bits of `b` where those of `a` are clear.
-#[inline]
-fn and_not(a: L, b: L) -> L {
-    !a & b
-}
-/// A mask, all ones in the lanes where `a < b`.
-#[inline]
-fn lt(a: L, b: L) -> L {
-    a.simd_lt(b)
-}
-/// A mask, all ones in the lanes where `a > b`.
-#[inline]
-fn gt(a: L, b: L) -> L {
-    a.simd_gt(b)
-}
-/// A mask, all ones in the lanes where `a >= b`.
-#[inline]
-fn ge(a: L, b: L) -> L {
-    a.simd_ge(b)
-}
-/// A mask, all ones in the lanes where `a != b`.
-#[inline]
-fn ne(a: L, b: L) -> L {
-    a.simd_ne(b)
-}
-/// Whether every lane of `mask` is set.
-#[inline]
-fn all(mask: L) -> bool {
-    mask.all()
-}
-/// The float next to `p` (finite, not zero) away from zero where `o` (not zero) has
-/// the sign of `p`, towards zero where it has the other: the bits of `p` plus one,
-/// or minus one, as in `one_ulp_towards`.
+/// Four [`Real`] numbers, one per lane, on any processor.
 #[cfg(not(feature = "f32"))]
-#[inline]
-fn step_towards(p: L, o: L) -> L {
+pub type PortableFour = wide::f64x4;
+/// Four [`Real`] numbers, one per lane, on any processor.
+#[cfg(feature = "f32")]
+pub type PortableFour = wide::f32x4;
+
+impl RealSource for Portable {
+    type Four = PortableFour;
+
+    #[inline(always)]
+    fn splat(self, x: Real) -> PortableFour {
+        PortableFour::splat(x)
+    }
+
+    #[inline(always)]
+    fn gather(self, values: [Real; 4]) -> PortableFour {
+        PortableFour::from(values)
+    }
+}
+
+impl RealLanes for PortableFour {
+    #[inline(always)]
+    fn sqrt(self) -> Self {
+        PortableFour::sqrt(self)
+    }
+
+    #[inline(always)]
+    fn abs(self) -> Self {
+        PortableFour::abs(self)
+    }
+
+    #[inline(always)]
+    fn max(self, other: Self) -> Self {
+        PortableFour::max(self, other)
+    }
+
+    #[inline(always)]
+    fn and_not(self, other: Self) -> Self {
+        !self & other
+    }
+
+    #[inline(always)]
+    fn lt(self, other: Self) -> Self {
+        PortableFour::simd_lt(self, other)
+    }
+
+    #[inline(always)]
+    fn gt(self, other: Self) -> Self {
+        PortableFour::simd_gt(self, other)
+    }
+
+    #[inline(always)]
+    fn ge(self, other: Self) -> Self {
+        PortableFour::simd_ge(self, other)
+    }
+
+    #[inline(always)]
+    fn ne(self, other: Self) -> Self {
+        PortableFour::simd_ne(self, other)
+    }
+
+    #[inline(always)]
+    fn select(self, yes: Self, no: Self) -> Self {
+        PortableFour::select(self, yes, no)
+    }
+
+    #[inline(always)]
+    fn all(self) -> bool {
+        PortableFour::all(self)
+    }
+
+    #[inline(always)]
+    fn step_towards(self, towards: Self) -> Self {
+        step_towards(self, towards)
+    }
+
+    #[inline(always)]
+    fn to_array(self) -> [Real; 4] {
+        PortableFour::to_array(self)
+    }
+}
+
+/// [`RealLanes::step_towards`] on the bits of four `f64`: plus one, minus two
+/// where the signs differ.
+#[cfg(not(feature = "f32"))]
+#[inline(always)]
+fn step_towards(p: PortableFour, o: PortableFour) -> PortableFour {
     use wide::{bytemuck::cast, u64x4};
     let (bits, differ): (u64x4, u64x4) = (cast(p), cast(p ^ o));
     cast(bits + u64x4::splat(1) - ((differ >> 63) << 1))
 }
-/// The float next to `p` (finite, not zero) away from zero where `o` (not zero) has
-/// the sign of `p`, towards zero where it has the other: the bits of `p` plus one,
-/// or minus one, as in `one_ulp_towards`.
+
+/// [`RealLanes::step_towards`] on the bits of four `f32`: plus one, minus two
+/// where the signs differ.
 #[cfg(feature = "f32")]
-#[inline]
-fn step_towards(p: L, o: L) -> L {
+#[inline(always)]
+fn step_towards(p: PortableFour, o: PortableFour) -> PortableFour {
     use wide::{bytemuck::cast, u32x4};
     let (bits, differ): (u32x4, u32x4) = (cast(p), cast(p ^ o));
     cast(bits + u32x4::splat(1) - ((differ >> 31) << 1))
 }
-/// `a` in the lanes where `mask` is set, `b` in the others.
-#[inline]
-fn select(mask: L, a: L, b: L) -> L {
-    mask.select(a, b)
-}
-
-four_ray_sphere_test!();
-four_hit_shading!();

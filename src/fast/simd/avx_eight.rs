@@ -1,105 +1,19 @@
-//! The fast hierarchy's tests on eight `f32` lanes in AVX instructions, on the
-//! x86-64 processors that have them: a node's eight boxes and a group's eight
-//! triangles. The processor is asked at run time ([`AvxLanes::detect`]), so the build
-//! needs no flag.
-//!
-//! As in [`crate::fast::simd::avx`], the functions using AVX are compiled with it
-//! (`#[target_feature(enable = "avx")]`), and code compiled without it calls them
-//! only where an [`AvxLanes`] proves that the processor has AVX: the search is run
-//! through [`AvxLanes::run`], so that the tests inline into it. An [`Eight`], eight
-//! lanes in one register, is made only from an `AvxLanes`, so that its operations
-//! may use AVX too.
+//! Eight `f32` in one AVX register: the lanes of the fast hierarchy's tests (a
+//! node's eight boxes, a group's eight triangles) on the processors that have AVX.
 #![allow(unsafe_code)]
 
 use std::arch::x86_64::{
     __m256, _CMP_GT_OQ, _CMP_LE_OQ, _CMP_LT_OQ, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps,
-    _mm256_cmp_ps, _mm256_loadu_ps, _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps,
-    _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps, _mm256_storeu_ps, _mm256_sub_ps, _mm256_xor_ps,
+    _mm256_cmp_ps, _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps,
+    _mm256_set1_ps, _mm256_sub_ps, _mm256_xor_ps,
 };
 use std::ops::{Add, BitAnd, BitOr, Mul, Neg, Sub};
 
-use crate::fast::hierarchy::triangle_group::{GroupRay, TriangleGroup};
-use crate::fast::hierarchy::wide_node::{EightLanes, Limit, WIDTH, WideNode, WideRay, enters_in};
-use crate::fast::simd::float_lanes::{FloatLanes, LaneSource};
+use crate::fast::simd::float_lanes::FloatLanes;
 
-/// Proof that this processor has AVX: made only by [`AvxLanes::detect`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct AvxLanes(());
-
-impl AvxLanes {
-    /// `Some` where the processor has AVX.
-    pub fn detect() -> Option<AvxLanes> {
-        std::arch::is_x86_feature_detected!("avx").then_some(AvxLanes(()))
-    }
-
-    /// Runs `search` compiled with AVX, so that the tests it makes (boxes and
-    /// triangle groups) inline into it as AVX instructions instead of being called
-    /// one node or group at a time.
-    #[inline(always)]
-    pub fn run<T>(self, search: impl FnOnce(AvxLanes) -> T) -> T {
-        // SAFETY: an `AvxLanes` is made only by `detect`, where the processor has
-        // AVX, so code compiled with AVX can run.
-        unsafe { with_avx(self, search) }
-    }
-}
-
-/// `search(avx)`, compiled with AVX.
-#[target_feature(enable = "avx")]
-fn with_avx<T>(avx: AvxLanes, search: impl FnOnce(AvxLanes) -> T) -> T {
-    search(avx)
-}
-
-impl EightLanes for AvxLanes {
-    /// The slab test of the eight boxes at once.
-    #[inline(always)]
-    fn enters(self, ray: &WideRay, node: &WideNode, limit: Limit) -> (u32, [f32; WIDTH]) {
-        let mut entries = [0.0; WIDTH];
-        let mask = enters_in(self, ray, node, limit, &mut entries);
-        (mask, entries)
-    }
-
-    /// The pre-test of the eight triangles at once.
-    #[inline(always)]
-    fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32 {
-        group.candidates_in(ray, self)
-    }
-}
-
-impl LaneSource for AvxLanes {
-    type Lanes = Eight;
-
-    /// The eight numbers of `row`.
-    #[inline(always)]
-    fn load(self, row: &[f32; 8]) -> Eight {
-        // SAFETY: an `AvxLanes` is made only where the processor has AVX, and
-        // `row` holds eight `f32`.
-        Eight(unsafe { _mm256_loadu_ps(row.as_ptr()) })
-    }
-
-    /// `x` in every lane.
-    #[inline(always)]
-    fn splat(self, x: f32) -> Eight {
-        // SAFETY: an `AvxLanes` is made only where the processor has AVX.
-        Eight(unsafe { _mm256_set1_ps(x) })
-    }
-
-    /// Writes the eight lanes to `row`.
-    #[inline(always)]
-    fn store(self, lanes: Eight, row: &mut [f32; 8]) {
-        // SAFETY: an `AvxLanes` is made only where the processor has AVX, and
-        // `row` holds eight `f32`.
-        unsafe { _mm256_storeu_ps(row.as_mut_ptr(), lanes.0) }
-    }
-
-    #[inline(always)]
-    fn first(self) -> usize {
-        0
-    }
-}
-
-/// Eight `f32` in an AVX register, made only from an [`AvxLanes`].
+/// Eight `f32` in an AVX register, made only from an [`Avx`](super::avx::Avx).
 #[derive(Clone, Copy)]
-pub struct Eight(__m256);
+pub struct Eight(pub(super) __m256);
 
 /// Implements a binary operator of [`Eight`] by an AVX instruction.
 macro_rules! eight_operator {
@@ -189,9 +103,10 @@ impl FloatLanes for Eight {
 
 #[cfg(test)]
 mod tests {
-    use super::*;
-    use crate::fast::hierarchy::triangle_group::GROUP;
-    use crate::fast::hierarchy::wide_node::Portable;
+    use crate::fast::hierarchy::triangle_group::{GROUP, GroupRay, TriangleGroup};
+    use crate::fast::hierarchy::wide_node::{EightLanes, Limit, WIDTH, WideNode, WideRay};
+    use crate::fast::simd::avx::Avx;
+    use crate::fast::simd::portable::Portable;
     use crate::geometry::{Ray, ShearedRay};
     use crate::maths::{Real, Vec3, pixel_rng, to_single, uniform};
 
@@ -201,7 +116,7 @@ mod tests {
     /// slots.
     #[test]
     fn avx_and_portable_lanes_enter_the_same_boxes_to_the_bit() {
-        let Some(avx) = AvxLanes::detect() else {
+        let Some(avx) = Avx::detect() else {
             return;
         };
         let mut rng = pixel_rng(11, 0);
@@ -225,7 +140,7 @@ mod tests {
             );
             let wide = WideRay::new(&ray, ray.direction.recip());
             let limit = Limit::new(coordinate(10.0).abs());
-            let (mask, entries) = avx.run(|avx| avx.enters(&wide, &node, limit));
+            let (mask, entries) = avx.enters(&wide, &node, limit);
             let (portable_mask, portable_entries) = Portable.enters(&wide, &node, limit);
             assert_eq!(mask, portable_mask, "{ray:?} {node:?}");
             for lane in 0..WIDTH {
@@ -245,7 +160,7 @@ mod tests {
     /// rays aimed at the group's corners from near and far.
     #[test]
     fn avx_and_portable_lanes_keep_the_same_triangles() {
-        let Some(avx) = AvxLanes::detect() else {
+        let Some(avx) = Avx::detect() else {
             return;
         };
         let mut rng = pixel_rng(12, 0);
@@ -266,7 +181,7 @@ mod tests {
             let origin = target + point(if trial % 2 == 0 { 2.0 } else { 1e-3 });
             let ray = Ray::new(origin, (target - origin).normalize());
             let group_ray = GroupRay::new(&ShearedRay::new(&ray));
-            let lanes = avx.run(|avx| avx.candidates(&group, &group_ray));
+            let lanes = avx.candidates(&group, &group_ray);
             assert_eq!(lanes, group.candidates(&group_ray), "{ray:?} {triangles:?}");
             kept += lanes.count_ones();
             set_aside += 8 - lanes.count_ones();
