@@ -107,12 +107,15 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
             "liste de contrôle\u{a0}: {passed} réussis\u{a0}; {failed} en échec"
         )
     );
-    progress(
-        current,
-        sessions.last().map_or(0, |e| e.len()),
+    let last = sessions.last().copied().unwrap_or_default();
+    let chosen_here = last.iter().filter(|e| chosen(e.name)).count();
+    let progress = Progress {
+        session: current,
+        total: last.len(),
+        chosen: (!filters.is_empty()).then_some(chosen_here),
         done,
-        next.or(stage_next),
-    );
+    };
+    progress.print(next.or(stage_next));
     if failed == 0 {
         ExitCode::SUCCESS
     } else {
@@ -228,20 +231,50 @@ fn look_again(
     })
 }
 
-/// The closing line: how many of the last session's exercises pass, and which is next
-/// (an exercise, or a stage that differs although its exercises pass).
-fn progress(session: u32, total: usize, done: usize, next: Option<String>) {
-    let line = match next {
-        Some(next) => say!(
-            "progress: session {session}: {done} of {total} exercises done; next: {next}",
-            "progression\u{a0}: séance {session}\u{a0}: {done} exercices faits sur {total}\u{a0}; ensuite\u{a0}: {next}"
-        ),
-        None => say!(
-            "progress: session {session}: all {total} exercises done",
-            "progression\u{a0}: séance {session}\u{a0}: les {total} exercices sont faits"
-        ),
-    };
-    println!("{line}");
+/// Where the last session stands, for the closing line.
+struct Progress {
+    session: u32,
+    /// Its exercises.
+    total: usize,
+    /// How many of them a name filter chose, if the checklist was given one.
+    chosen: Option<usize>,
+    /// How many of those checked pass.
+    done: usize,
+}
+
+impl Progress {
+    /// The closing line: how many of the last session's exercises pass, and which is
+    /// next (an exercise, or a stage that differs although its exercises pass). With
+    /// a name filter it counts only the exercises chosen, and says so: the others
+    /// were not checked, so the session is not called done.
+    fn print(&self, next: Option<String>) {
+        let Progress {
+            session,
+            total,
+            done,
+            ..
+        } = *self;
+        let line = match (self.chosen, next) {
+            (Some(chosen), next) => {
+                let next = next
+                    .map(|next| say!("; next: {next}", "\u{a0}; ensuite\u{a0}: {next}"))
+                    .unwrap_or_default();
+                say!(
+                    "progress: session {session}: exercises the name filter chose: {chosen} of {total}, done: {done}{next}; cargo test without a name checks them all",
+                    "progression\u{a0}: séance {session}\u{a0}: exercices choisis par le filtre de noms\u{a0}: {chosen} sur {total}, faits\u{a0}: {done}{next}\u{a0}; cargo test sans nom les vérifie tous"
+                )
+            }
+            (None, Some(next)) => say!(
+                "progress: session {session}: {done} of {total} exercises done; next: {next}",
+                "progression\u{a0}: séance {session}\u{a0}: {done} exercices faits sur {total}\u{a0}; ensuite\u{a0}: {next}"
+            ),
+            (None, None) => say!(
+                "progress: session {session}: all {total} exercises done",
+                "progression\u{a0}: séance {session}\u{a0}: les {total} exercices sont faits"
+            ),
+        };
+        println!("{line}");
+    }
 }
 
 /// Runs the line `name` alone, in this process, and prints its verdict for
