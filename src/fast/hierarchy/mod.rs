@@ -5,7 +5,7 @@
 //! |---|---|---|
 //! | [`fast_bvh`] | the hierarchy of eight-box nodes and eight-triangle groups | `Bvh` |
 //! | [`sah`] | splits chosen by the surface area heuristic | `Bvh::build` |
-//! | [`wide_node`] | eight boxes tested at once, on any processor | `Aabb::entry` |
+//! | [`wide_node`] | eight boxes tested at once, on any lanes | `Aabb::entry` |
 //! | [`traversal_stack`] | the children yet to visit, nearest on top | the course's stack |
 //! | [`triangle_group`] | the single-precision pre-test of eight triangles | the ray-triangle test |
 

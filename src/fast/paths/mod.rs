@@ -6,11 +6,11 @@
 //! | [`paths_at_once`] | a row's pixels four paths at a time | `pixel` and `radiance` |
 //! | [`path`] | one pixel's samples, one hit per step, summed as the recursion returns | `radiance` |
 //! | [`hits_at_once`] | the work at those four paths' hits, on the lanes | `diffuse` |
-//! | [`light_samples_at_once`] | their samples of a sphere light, on the lanes | `light_sample` |
+//! | [`light_samples_at_once`] | their samples of a sphere light, written once for any lanes | `light_sample` |
 //! | [`direct_at_once`] | the direct light of four paths, their shadow rays traced together | `direct_light` |
 //! | [`meshes_at_once`] | the meshes those paths meet, searched after their spheres | `Scene::intersect` |
-//! | [`shading`] | four hits' records, direct light and bounces, written once for any lanes | `hit_at`, `direct_light`, `light_sample`, `cosine_direction`, `Hit::spawn` |
-//! | [`sphere_lanes`] | the nearest sphere of each of four rays | `Scene::nearest_sphere` |
+//! | [`shading`] | four hits' records, point light and bounces, written once for any lanes | `hit_at`, `direct_light`, `cosine_direction`, `Hit::spawn` |
+//! | [`sphere_lanes`] | the nearest sphere of each of four rays, written once for any lanes | `Sphere::intersect`, `Scene::nearest_sphere` |
 
 pub mod direct_at_once;
 pub mod hits_at_once;

@@ -36,8 +36,8 @@ impl RealSource for Avx {
     }
 }
 
-/// Implements an operation of [`Four`] by an AVX instruction on its registers.
-macro_rules! four_operation {
+/// Implements a binary operator of [`Four`] by an AVX instruction on its registers.
+macro_rules! four_operator {
     ($trait:ident, $method:ident, $instruction:expr) => {
         impl $trait for Four {
             type Output = Four;
@@ -50,12 +50,12 @@ macro_rules! four_operation {
     };
 }
 
-four_operation!(Add, add, _mm256_add_pd);
-four_operation!(Sub, sub, _mm256_sub_pd);
-four_operation!(Mul, mul, _mm256_mul_pd);
-four_operation!(Div, div, _mm256_div_pd);
-four_operation!(BitAnd, bitand, _mm256_and_pd);
-four_operation!(BitOr, bitor, _mm256_or_pd);
+four_operator!(Add, add, _mm256_add_pd);
+four_operator!(Sub, sub, _mm256_sub_pd);
+four_operator!(Mul, mul, _mm256_mul_pd);
+four_operator!(Div, div, _mm256_div_pd);
+four_operator!(BitAnd, bitand, _mm256_and_pd);
+four_operator!(BitOr, bitor, _mm256_or_pd);
 
 impl Neg for Four {
     type Output = Four;
