@@ -128,22 +128,11 @@ impl Search for FastBvh {
     }
 
     fn nearest(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> Option<MeshHit> {
-        let search = Nearest(Query {
-            bvh: self,
-            mesh,
-            ray,
-            t_max,
-        });
-        self.lanes.run(search)
+        self.lanes.run(Nearest(Query::new(self, mesh, ray, t_max)))
     }
 
     fn occluded(&self, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
-        self.lanes.run(Occluded(Query {
-            bvh: self,
-            mesh,
-            ray,
-            t_max,
-        }))
+        self.lanes.run(Occluded(Query::new(self, mesh, ray, t_max)))
     }
 }
 
@@ -155,6 +144,18 @@ struct Query<'a> {
     t_max: Real,
 }
 
+impl<'a> Query<'a> {
+    /// The search of `bvh` for `ray` against `mesh`, up to `t_max`.
+    fn new(bvh: &'a FastBvh, mesh: &'a Mesh, ray: &'a Ray, t_max: Real) -> Query<'a> {
+        Query {
+            bvh,
+            mesh,
+            ray,
+            t_max,
+        }
+    }
+}
+
 /// The nearest hit of a query, on any lanes ([`FastBvh::nearest_with`]).
 struct Nearest<'a>(Query<'a>);
 
@@ -163,13 +164,10 @@ impl OnLanes for Nearest<'_> {
 
     #[inline(always)]
     fn on<L: LaneKind>(self, lanes: L) -> Option<MeshHit> {
-        let Query {
-            bvh,
-            mesh,
-            ray,
-            t_max,
-        } = self.0;
-        bvh.nearest_with(lanes, mesh, ray, t_max)
+        let query = self.0;
+        query
+            .bvh
+            .nearest_with(lanes, query.mesh, query.ray, query.t_max)
     }
 }
 
@@ -181,13 +179,10 @@ impl OnLanes for Occluded<'_> {
 
     #[inline(always)]
     fn on<L: LaneKind>(self, lanes: L) -> bool {
-        let Query {
-            bvh,
-            mesh,
-            ray,
-            t_max,
-        } = self.0;
-        bvh.occluded_with(lanes, mesh, ray, t_max)
+        let query = self.0;
+        query
+            .bvh
+            .occluded_with(lanes, query.mesh, query.ray, query.t_max)
     }
 }
 
