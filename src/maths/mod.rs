@@ -8,7 +8,6 @@
 //! | [`random`] | 3 | the random numbers of a pixel's samples |
 //! | [`sampling`] | 3 | random directions and offsets, each beside its density |
 //! | [`frame`] | 3 | an orthonormal frame around a normal |
-//! | [`spread`] | `beyond` | numbers a sampler spreads evenly over a pixel's samples |
 
 pub mod numbers;
 
@@ -24,8 +23,6 @@ pub mod frame;
 pub mod random;
 #[cfg(feature = "s3")]
 pub mod sampling;
-#[cfg(feature = "beyond")]
-pub mod spread;
 
 pub use numbers::*;
 #[cfg(feature = "s3")]

@@ -13,10 +13,9 @@ use crate::maths::Real;
 pub enum PixelRng {
     /// Independent numbers from a generator seeded by the pixel: the course's.
     Independent(rand_pcg::Pcg64Mcg),
-    /// Numbers that a sampler beyond the course spreads evenly over the pixel's
-    /// samples (`src/samplers/`).
-    #[cfg(feature = "beyond")]
-    Spread(Box<dyn crate::maths::spread::SpreadNumbers>),
+    /// Numbers from another source: chosen in advance (a test that sets each
+    /// decision), or spread evenly over the pixel's samples by a sampler.
+    Given(Box<dyn NumberSource>),
 }
 
 /// The independent random numbers of pixel number `pixel` (row-major from the
@@ -40,8 +39,7 @@ pub fn pixel_hash(seed: u64, pixel: u64) -> u64 {
 pub fn uniform(rng: &mut PixelRng) -> Real {
     match rng {
         PixelRng::Independent(stream) => stream.random::<Real>(),
-        #[cfg(feature = "beyond")]
-        PixelRng::Spread(numbers) => numbers.number(),
+        PixelRng::Given(numbers) => numbers.number(),
     }
 }
 
@@ -52,11 +50,33 @@ pub fn uniform(rng: &mut PixelRng) -> Real {
 pub fn uniform_pair(rng: &mut PixelRng) -> (Real, Real) {
     match rng {
         PixelRng::Independent(stream) => (stream.random::<Real>(), stream.random::<Real>()),
-        #[cfg(feature = "beyond")]
-        PixelRng::Spread(numbers) => numbers.pair(),
+        PixelRng::Given(numbers) => numbers.pair(),
     }
 }
 // ANCHOR_END: uniform
+
+/// A source of the numbers of a pixel's samples other than the pixel's own
+/// generator. Every sample starts with [`start_sample`](NumberSource::start_sample);
+/// each random decision of its path (where in the pixel, where on the lens, which
+/// light direction, which bounce direction, whether the path goes on) then takes the
+/// next number, or the next pair for a two-dimensional decision.
+pub trait NumberSource: std::fmt::Debug + Send {
+    /// Starts sample number `sample` of the pixel: a source whose numbers depend on
+    /// the sample (spread over the pixel's samples) moves to it; by default nothing.
+    fn start_sample(&mut self, _sample: u32) {}
+    /// A number of `[0, 1)` for a one-dimensional decision.
+    fn number(&mut self) -> Real;
+    /// A point of `[0, 1)^2` for a two-dimensional decision.
+    fn pair(&mut self) -> (Real, Real);
+    /// A copy that draws the same numbers from here on.
+    fn copy(&self) -> Box<dyn NumberSource>;
+}
+
+impl Clone for Box<dyn NumberSource> {
+    fn clone(&self) -> Self {
+        self.copy()
+    }
+}
 
 // ANCHOR: splitmix64
 /// SplitMix64's finaliser: a bijection of `u64` that scatters nearby inputs.
@@ -86,6 +106,31 @@ mod tests {
             draw(1, 0),
             "seed and pixel are not interchangeable"
         );
+    }
+
+    /// Numbers chosen in advance, drawn in order.
+    #[derive(Clone, Debug)]
+    struct Chosen(Vec<Real>);
+
+    impl NumberSource for Chosen {
+        fn number(&mut self) -> Real {
+            self.0.remove(0)
+        }
+        fn pair(&mut self) -> (Real, Real) {
+            (self.number(), self.number())
+        }
+        fn copy(&self) -> Box<dyn NumberSource> {
+            Box::new(self.clone())
+        }
+    }
+
+    #[test]
+    fn given_numbers_are_drawn_in_order_and_a_copy_replays_them() {
+        let mut rng = PixelRng::Given(Box::new(Chosen(vec![0.25, 0.5, 0.75])));
+        assert_eq!(uniform(&mut rng), 0.25);
+        let mut copy = rng.clone();
+        assert_eq!(uniform_pair(&mut rng), (0.5, 0.75));
+        assert_eq!(uniform_pair(&mut copy), (0.5, 0.75));
     }
 
     #[test]

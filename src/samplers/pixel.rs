@@ -17,14 +17,14 @@ use crate::scene::beyond::Sampler;
 pub fn sampler_rng(sampler: Sampler, seed: u64, pixel: u64, block: u32) -> PixelRng {
     match sampler {
         Sampler::Independent => pixel_rng(seed, pixel),
-        _ => PixelRng::Spread(Box::new(Spread::new(sampler, seed, pixel, block))),
+        _ => PixelRng::Given(Box::new(Spread::new(sampler, seed, pixel, block))),
     }
 }
 
 /// Starts sample number `sample` of the pixel whose numbers `rng` draws: a spread
 /// sampler's points depend on it, independent numbers do not.
 pub fn start_sample(rng: &mut PixelRng, sample: u32) {
-    if let PixelRng::Spread(numbers) = rng {
+    if let PixelRng::Given(numbers) = rng {
         numbers.start_sample(sample);
     }
 }

@@ -1,9 +1,9 @@
 //! Stratified numbers and Sobol points: each decision of a path spread evenly over
 //! the samples of a pixel, rather than drawn independently.
 
+use crate::maths::NumberSource;
 use crate::maths::Real;
 use crate::maths::random::pixel_hash;
-use crate::maths::spread::SpreadNumbers;
 use crate::samplers::sobol::{mix_bits, owen_scramble, permute, sobol_pair};
 use crate::scene::beyond::Sampler;
 
@@ -68,7 +68,7 @@ impl Spread {
     }
 }
 
-impl SpreadNumbers for Spread {
+impl NumberSource for Spread {
     fn start_sample(&mut self, sample: u32) {
         self.sample = sample;
         self.dimension = 0;
@@ -105,7 +105,7 @@ impl SpreadNumbers for Spread {
     }
     // ANCHOR_END: spread_pair
 
-    fn copy(&self) -> Box<dyn SpreadNumbers> {
+    fn copy(&self) -> Box<dyn NumberSource> {
         Box::new(self.clone())
     }
 }
