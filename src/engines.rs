@@ -1,41 +1,74 @@
-//! Beyond the course: which engine renders a scene. Every stage renders through the
+//! Beyond the course: which engine renders a scene. A scene renders through the
 //! course's functions ([`render::render_reporting`](crate::render::render_reporting))
-//! unless its settings ask for more. A sampler or adaptive sampling (`[render]
-//! sampler`, `noise`) takes the samplers' pixel loop ([`samplers::pixel`]). The fast
-//! engine (`[render] fast = true`, `--fast`) gives the course's bytes in less time:
-//! it follows four paths at a time where every object is diffuse (spheres, and
-//! meshes, which always are; [`paths_at_once`]), a mesh's hierarchy is its own when
-//! the scene file is read (`scene_file/session6.rs`), and any other scene takes the
+//! unless the settings beyond the course ([`Beyond`], read with the scene by
+//! [`scene_file::beyond`](crate::scene_file::beyond)) ask for more. A sampler or
+//! adaptive sampling (`[render] sampler`, `noise`) takes the samplers' pixel loop
+//! ([`samplers::pixel`]). The fast engine (`[render] fast = true`, `--fast`) gives the
+//! course's bytes in less time: it follows four paths at a time where every object
+//! is diffuse (spheres, and meshes, which always are; [`paths_at_once`]), a mesh's
+//! hierarchy is its own when the scene file is read, and any other scene takes the
 //! course's code (or the samplers').
 
+use std::path::Path;
+
 use crate::Render;
+use crate::check::expected::Renderer;
 use crate::fast::paths::paths_at_once;
 use crate::fast::paths::sphere_lanes::SphereLanes;
+use crate::files::Files;
 use crate::render::render_rows;
 use crate::samplers;
 use crate::scene::Scene;
-use crate::scene::beyond::Sampler;
+use crate::scene::beyond::{Beyond, Sampler};
+use crate::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
+use crate::scene_file::{Overrides, SceneError};
 
-/// Renders `scene` on the current rayon thread pool with the engine its settings
-/// choose, calling `progress` as [`render_rows`] does.
-pub fn render_reporting(scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Render {
-    if scene.settings.beyond.fast && paths_at_once::applies(scene) {
+/// Renders `scene` on the current rayon thread pool with the engine that `beyond`
+/// chooses, calling `progress` as [`render_rows`] does.
+pub fn render_reporting(scene: &Scene, beyond: &Beyond, progress: &(dyn Fn(u64) + Sync)) -> Render {
+    if beyond.fast && paths_at_once::applies(scene) {
         let spheres = SphereLanes::new(&scene.spheres);
         return render_rows(scene, progress, |row, line, taken| {
-            paths_at_once::row(scene, &spheres, row, line, taken)
+            paths_at_once::row(scene, beyond, &spheres, row, line, taken)
         });
     }
-    let beyond = scene.settings.beyond;
     if beyond.sampler != Sampler::Independent || beyond.noise.is_some() {
         return render_rows(scene, progress, |row, line, taken| {
-            samplers::pixel::row(scene, row, line, taken)
+            samplers::pixel::row(scene, beyond, row, line, taken)
         });
     }
     crate::render::render_reporting(scene, progress)
 }
 
-/// Renders `scene` with the engine its settings choose: [`render_reporting`] with no
-/// one to report to.
-pub fn render(scene: &Scene) -> Render {
-    render_reporting(scene, &|_| {})
+/// Renders `scene` with the engine that `beyond` chooses: [`render_reporting`] with
+/// no one to report to.
+pub fn render(scene: &Scene, beyond: &Beyond) -> Render {
+    render_reporting(scene, beyond, &|_| {})
+}
+
+/// The fast engine as `check`'s renderer: the course's references, in less time.
+pub struct Fast;
+
+impl Renderer for Fast {
+    fn scene(
+        &self,
+        text: &str,
+        path: &Path,
+        overrides: &Overrides,
+        files: &dyn Files,
+    ) -> Result<Scene, SceneError> {
+        let fast = BeyondOverrides {
+            fast: true,
+            ..BeyondOverrides::default()
+        };
+        Ok(parse_with_beyond(text, path, overrides, &fast, files)?.0)
+    }
+
+    fn render(&self, scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Render {
+        let fast = Beyond {
+            fast: true,
+            ..Beyond::default()
+        };
+        render_reporting(scene, &fast, progress)
+    }
 }

@@ -107,11 +107,8 @@ pub mod check;
 
 pub mod inspect;
 
-#[cfg(feature = "beyond")]
-pub use engines::{render, render_reporting};
 pub use files::{Disk, Files, InMemory};
 pub use render::{Film, Render, encode_png};
-#[cfg(not(feature = "beyond"))]
 pub use render::{render, render_reporting};
 pub use scene::Scene;
 pub use scene_file::{

@@ -5,8 +5,8 @@ use std::num::NonZeroU32;
 use std::path::Path;
 
 use crate::files::Files;
-use crate::render::Film;
 use crate::render::cache::cached_render;
+use crate::render::{Film, Render};
 use crate::render_reporting;
 use crate::scene::Scene;
 use crate::scene_file::{Overrides, SESSION, SceneError, Stage, parse_scene_from};
@@ -40,6 +40,43 @@ impl Expected {
     }
 }
 
+/// What reads a stage's scene file and renders the references: the course's code
+/// ([`Course`]), or any engine that gives the course's bytes in less time.
+pub trait Renderer: Sync {
+    /// The scene of scene-file text `text`, named `path` in errors, with `overrides`,
+    /// the files it refers to read from `files`.
+    fn scene(
+        &self,
+        text: &str,
+        path: &Path,
+        overrides: &Overrides,
+        files: &dyn Files,
+    ) -> Result<Scene, SceneError>;
+
+    /// `scene` rendered on the current thread pool, `progress` told of each row's
+    /// samples as they are done.
+    fn render(&self, scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Render;
+}
+
+/// The course's code: [`parse_scene_from`] and [`render_reporting`].
+pub struct Course;
+
+impl Renderer for Course {
+    fn scene(
+        &self,
+        text: &str,
+        path: &Path,
+        overrides: &Overrides,
+        files: &dyn Files,
+    ) -> Result<Scene, SceneError> {
+        parse_scene_from(text, path, overrides, files)
+    }
+
+    fn render(&self, scene: &Scene, progress: &(dyn Fn(u64) + Sync)) -> Render {
+        render_reporting(scene, progress)
+    }
+}
+
 /// Where an image is rendered from: the stage, the edits of its scene file, the size
 /// and the folder of cached references.
 pub struct Source<'a> {
@@ -53,6 +90,8 @@ pub struct Source<'a> {
     pub files: &'a dyn Files,
     /// Told how many samples of each row are done, for a progress bar.
     pub progress: &'a (dyn Fn(u64) + Sync),
+    /// What reads the scene and renders it.
+    pub renderer: &'a dyn Renderer,
 }
 
 impl Source<'_> {
@@ -84,8 +123,7 @@ impl Source<'_> {
     }
 
     /// The scene of the file text `text` at the student's size, with `samples` and
-    /// `seed` when given, rendered by the fast engine where this build has it, which
-    /// gives the course's image in less time.
+    /// `seed` when given, read by the source's renderer.
     pub fn scene(
         &self,
         text: &str,
@@ -97,11 +135,10 @@ impl Source<'_> {
             height: NonZeroU32::new(self.size.1),
             samples: samples.and_then(NonZeroU32::new),
             seed,
-            #[cfg(feature = "beyond")]
-            fast: true,
             ..Overrides::default()
         };
-        parse_scene_from(text, &self.stage.file(), &overrides, self.files)
+        self.renderer
+            .scene(text, &self.stage.file(), &overrides, self.files)
     }
 
     /// The film of the scene-file text `text` at the student's size, with `samples`
@@ -109,7 +146,7 @@ impl Source<'_> {
     pub fn film(&self, text: &str, samples: u32, seed: Option<u64>) -> Result<Film, SceneError> {
         let text = searched_by_hierarchy(text);
         let scene = self.scene(&text, Some(samples), seed)?;
-        let render = |progress: &(dyn Fn(u64) + Sync)| render_reporting(&scene, progress).film;
+        let render = |progress: &(dyn Fn(u64) + Sync)| self.renderer.render(&scene, progress).film;
         // A cache that cannot be written only costs time on the next check.
         let (film, _saved) = cached_render(self.cache, &text, &scene, self.progress, render);
         Ok(film)

@@ -14,6 +14,7 @@ use raycourse::{Overrides, encode_png, find_stage, scene_file::stage_names};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
+use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
 use crate::commands::output::{timed_render, write};
 
@@ -92,10 +93,10 @@ fn animate(
             plunge: Some(angle(k, frames, angles)),
             ..options.overrides()
         };
-        let scene = stage.scene(&overrides)?;
+        let job = Job::of_stage(stage, &overrides, options)?;
         let label = format!("{name} frame {}/{frames}", k + 1);
-        let timed = timed_render(&label, &scene, options)?;
-        let png = encode_png(&timed.result.film, scene.settings.gamma);
+        let timed = timed_render(&label, &job, options)?;
+        let png = encode_png(&timed.result.film, job.scene.settings.gamma);
         if let Some(encoder) = encoder.as_mut() {
             let rgb = image::load_from_memory(&png).expect("the PNG was just encoded");
             let delay = Delay::from_numer_denom_ms(100, 1);

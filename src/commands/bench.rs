@@ -7,6 +7,7 @@ use raycourse::{Overrides, Scene, Stage, stages};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
+use crate::commands::job::Job;
 use crate::commands::options::{RenderArgs, WorkArgs};
 use crate::commands::output::{Timed, timed_render};
 
@@ -48,9 +49,9 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
     println!("{header}\n{rule}");
     let chosen = |session: u32| args.sessions.is_empty() || args.sessions.contains(&session);
     for stage in stages().filter(|s| chosen(s.session)) {
-        let scene = stage.scene(&Overrides::default())?;
-        let course = timed_render(stage.name, &scene, &options)?;
-        let row = row(stage, &scene, &course);
+        let job = Job::of_stage(stage, &Overrides::default(), &options)?;
+        let course = timed_render(stage.name, &job, &options)?;
+        let row = row(stage, &job.scene, &course);
         #[cfg(feature = "beyond")]
         let row = row + &crate::commands::beyond::fast_columns(stage, &course, &options)?;
         println!("{row}");

@@ -6,9 +6,11 @@ use std::path::{Path, PathBuf};
 use clap::Args;
 use raycourse::maths::Real;
 use raycourse::render::png::encode_rgb8;
-use raycourse::{Overrides, Scene, Stage};
+use raycourse::scene_file::beyond::{BeyondOverrides, load_with_beyond, stage_with_beyond};
+use raycourse::{Overrides, Render, Scene, Stage};
 
 use crate::commands::failure::Failure;
+use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
 use crate::commands::output::{Timed, timed_render, write};
 use crate::commands::stage::render_stage;
@@ -31,15 +33,44 @@ pub struct BeyondArgs {
     pub fast: bool,
 }
 
-impl RenderArgs {
-    /// The scene-file settings these options replace, those beyond the course
-    /// included.
-    pub fn overrides(&self) -> Overrides {
-        Overrides {
-            noise: self.beyond.noise,
-            fast: self.beyond.fast,
-            ..self.scene.overrides()
+impl BeyondArgs {
+    /// The scene-file settings beyond the course that these options replace.
+    pub fn overrides(&self) -> BeyondOverrides {
+        BeyondOverrides {
+            noise: self.noise,
+            fast: self.fast,
         }
+    }
+}
+
+impl Job {
+    /// The scene file at `path` with `overrides`, and the settings beyond the course
+    /// that it and `options` ask for.
+    pub fn of_file(
+        path: &Path,
+        overrides: &Overrides,
+        options: &RenderArgs,
+    ) -> Result<Job, Failure> {
+        let (scene, beyond) = load_with_beyond(path, overrides, &options.beyond.overrides())?;
+        Ok(Job { scene, beyond })
+    }
+
+    /// The scene of `stage` with `overrides`, and the settings beyond the course
+    /// that `options` ask for.
+    pub fn of_stage(
+        stage: &Stage,
+        overrides: &Overrides,
+        options: &RenderArgs,
+    ) -> Result<Job, Failure> {
+        let (scene, beyond) = stage_with_beyond(stage, overrides, &options.beyond.overrides())?;
+        Ok(Job { scene, beyond })
+    }
+
+    /// The scene rendered on the current thread pool by the engine its settings
+    /// beyond the course choose, `progress` told of each row's samples as they are
+    /// done.
+    pub fn render_reporting(&self, progress: &(dyn Fn(u64) + Sync)) -> Render {
+        raycourse::engines::render_reporting(&self.scene, &self.beyond, progress)
     }
 }
 
@@ -86,12 +117,12 @@ pub fn fast_columns(
     course: &Timed,
     options: &RenderArgs,
 ) -> Result<String, Failure> {
-    let fast = Overrides {
+    let fast = BeyondOverrides {
         fast: true,
-        ..Overrides::default()
+        ..BeyondOverrides::default()
     };
-    let scene = stage.scene(&fast)?;
-    let fast = timed_render(stage.name, &scene, options)?;
+    let (scene, beyond) = stage_with_beyond(stage, &Overrides::default(), &fast)?;
+    let fast = timed_render(stage.name, &Job { scene, beyond }, options)?;
     if fast.result.film != course.result.film {
         return Err(differs(stage));
     }

@@ -8,7 +8,7 @@ use clap::builder::PossibleValuesParser;
 use clap::{ArgMatches, FromArgMatches, Parser};
 use image::RgbImage;
 use indicatif::{ProgressBar, ProgressStyle};
-use raycourse::check::expected::Source;
+use raycourse::check::expected::{Renderer, Source};
 use raycourse::check::grading::{
     Grade, class_sheet, folder_sheet, grade_folder, image_of_any_stage, students,
 };
@@ -146,6 +146,7 @@ fn check_one(
         cache: &args.cache,
         files: &raycourse::Disk,
         progress: &progress,
+        renderer: RENDERER,
     };
     let lossy = path
         .extension()
@@ -154,6 +155,14 @@ fn check_one(
     bar.finish_and_clear();
     Ok(report?)
 }
+
+/// What renders the references: the fast engine where this build has it, which
+/// gives the course's images in less time.
+#[cfg(feature = "beyond")]
+const RENDERER: &dyn Renderer = &raycourse::engines::Fast;
+/// What renders the references: the course's code.
+#[cfg(not(feature = "beyond"))]
+const RENDERER: &dyn Renderer = &raycourse::check::expected::Course;
 
 /// Grades the images of the folder `dir`: one row per stage of the build; or, for a
 /// class (a folder of students' folders and no stage image of its own), one row per

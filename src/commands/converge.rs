@@ -7,13 +7,15 @@ use std::path::{Path, PathBuf};
 use clap::builder::PossibleValuesParser;
 use clap::{ArgMatches, FromArgMatches, Parser};
 use indicatif::ProgressBar;
+use raycourse::engines::render_reporting;
 use raycourse::maths::Real;
 use raycourse::render::Film;
 use raycourse::render::cache::cached_render;
-use raycourse::render_reporting;
+use raycourse::scene::beyond::Beyond;
+use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
 use raycourse::studies::convergence::{Rung, climb, fitted_slope, sample_ladder};
 use raycourse::studies::variant::{Edit, Variant, comparison, comparison_names};
-use raycourse::{Overrides, Scene, parse_scene, stages};
+use raycourse::{Disk, Overrides, Scene, stages};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
@@ -98,7 +100,7 @@ impl Study<'_> {
         edits: Vec<Edit>,
         samples: NonZeroU32,
         seed: Option<u64>,
-    ) -> Result<(Scene, String), Failure> {
+    ) -> Result<((Scene, Beyond), String), Failure> {
         let (source, path) = &self.source;
         let text = Variant {
             label: String::new(),
@@ -111,10 +113,14 @@ impl Study<'_> {
             height: self.args.height,
             samples: Some(samples),
             seed,
-            fast: self.args.fast,
             ..Overrides::default()
         };
-        Ok((parse_scene(&text, path, &overrides)?, text))
+        let beyond = BeyondOverrides {
+            fast: self.args.fast,
+            ..BeyondOverrides::default()
+        };
+        let scene = parse_with_beyond(&text, path, &overrides, &beyond, &Disk)?;
+        Ok((scene, text))
     }
 
     /// The variants to climb, and the edits that make the reference.
@@ -160,18 +166,19 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
                 .scene(v.edits.clone(), NonZeroU32::MIN, None)
                 .map(|s| s.0)
         })
-        .collect::<Result<Vec<Scene>, Failure>>()?;
+        .collect::<Result<Vec<(Scene, Beyond)>, Failure>>()?;
     let pool = args.work.pool()?;
     let ladder = sample_ladder(args.max_spp.get());
     let (truth, text) = study.scene(reference_edits, args.reference_spp, Some(REFERENCE_SEED))?;
-    let rows = u64::from(truth.camera.height);
+    let truth = (&truth.0, &truth.1);
+    let rows = u64::from(truth.0.camera.height);
     let work = ladder.iter().map(|&n| u64::from(n)).sum::<u64>() * variants.len() as u64;
     let bar = progress_bar(
         rows * (work + u64::from(args.reference_spp.get())),
         "",
         args.work.quiet,
     );
-    let reference = pool.install(|| reference(&args, &truth, &text, &bar))?;
+    let reference = pool.install(|| reference(&args, truth, &text, &bar))?;
     let mut rungs = vec![];
     for (variant, scene) in variants.iter().zip(scenes) {
         bar.set_message(variant.label.clone());
@@ -186,8 +193,8 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
     println!(
         "{}: {}x{}, reference {} spp, {} threads -> {}",
         args.scene,
-        truth.camera.width,
-        truth.camera.height,
+        truth.0.camera.width,
+        truth.0.camera.height,
         args.reference_spp,
         pool.current_num_threads(),
         out.with_extension("csv").display()
@@ -219,13 +226,13 @@ fn scene_source(name: &str) -> Result<(String, PathBuf), Failure> {
 /// differently in single precision, so both builds share a reference.
 fn reference(
     args: &ConvergeArgs,
-    truth: &Scene,
+    (truth, beyond): (&Scene, &Beyond),
     text: &str,
     bar: &ProgressBar,
 ) -> Result<Film, Failure> {
     bar.set_message(format!("reference, {} spp", truth.settings.samples));
     let progress = |done| bar.inc(done);
-    let render = |progress: &(dyn Fn(u64) + Sync)| render_reporting(truth, progress).film;
+    let render = |progress: &(dyn Fn(u64) + Sync)| render_reporting(truth, beyond, progress).film;
     let (film, saved) = cached_render(&args.cache, text, truth, &progress, render);
     if let Err(e) = saved {
         eprintln!(

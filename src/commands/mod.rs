@@ -2,6 +2,7 @@
 //! a render, its progress bar and closing line, and the failures they report.
 
 pub mod failure;
+pub mod job;
 pub mod options;
 pub mod output;
 pub mod pipe;

@@ -91,9 +91,9 @@ fn aov_parser() -> impl clap::builder::TypedValueParser<Value = Aov> {
         .map(|name| Aov::from_name(&name).expect("clap accepts only the kinds' names"))
 }
 
-#[cfg(not(feature = "beyond"))]
 impl RenderArgs {
-    /// The scene-file settings these options replace.
+    /// The scene-file settings these options replace (those beyond the course
+    /// aside: `commands/beyond.rs`).
     pub fn overrides(&self) -> Overrides {
         self.scene.overrides()
     }

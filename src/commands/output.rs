@@ -8,9 +8,10 @@ use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::inspect::aov::{Aov, see};
 use raycourse::inspect::false_colour::label as label_of;
 use raycourse::render::png::encode_rgb8;
-use raycourse::{Render, Scene, encode_png, render_reporting};
+use raycourse::{Render, Scene, encode_png};
 
 use crate::commands::failure::Failure;
+use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
 
 /// A progress bar of `length` steps labelled `label`, hidden when `quiet` (and by
@@ -37,8 +38,9 @@ pub struct Timed {
     pub threads: usize,
 }
 
-/// Renders `scene` on `--threads` threads with a progress bar (unless quiet).
-pub fn timed_render(label: &str, scene: &Scene, options: &RenderArgs) -> Result<Timed, Failure> {
+/// Renders `job` on `--threads` threads with a progress bar (unless quiet).
+pub fn timed_render(label: &str, job: &Job, options: &RenderArgs) -> Result<Timed, Failure> {
+    let scene = &job.scene;
     let pool = options.work.pool()?;
     let samples = u64::from(scene.settings.samples);
     let bar = progress_bar(
@@ -47,7 +49,7 @@ pub fn timed_render(label: &str, scene: &Scene, options: &RenderArgs) -> Result<
         options.work.quiet,
     );
     let start = Instant::now();
-    let result = pool.install(|| render_reporting(scene, &|done| bar.inc(done)));
+    let result = pool.install(|| job.render_reporting(&|done| bar.inc(done)));
     let seconds = start.elapsed().as_secs_f64();
     bar.finish_and_clear();
     Ok(Timed {
@@ -93,14 +95,15 @@ fn through_links(path: &Path) -> Result<PathBuf, Failure> {
     )))
 }
 
-/// Renders `scene` into a PNG (`options.out`, or `default_out`) and prints the
+/// Renders `job` into a PNG (`options.out`, or `default_out`) and prints the
 /// closing line: settings, time, rays and Mrays/s.
 pub fn render_to_file(
     label: &str,
-    scene: &Scene,
+    job: &Job,
     options: &RenderArgs,
     default_out: PathBuf,
 ) -> Result<(), Failure> {
+    let scene = &job.scene;
     if let Some(aov) = options.aov {
         let name = format!("{label}-{}.png", aov.name());
         let out = options
@@ -110,7 +113,7 @@ pub fn render_to_file(
         return aov_to_file(label, scene, aov, options, &out);
     }
     let out = options.out.clone().unwrap_or(default_out);
-    let timed = timed_render(label, scene, options)?;
+    let timed = timed_render(label, job, options)?;
     write(&out, &encode_png(&timed.result.film, scene.settings.gamma))?;
     let dropped = match timed.result.dropped {
         0 => String::new(),

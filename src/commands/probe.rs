@@ -10,6 +10,8 @@ use raycourse::stages;
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
+use crate::commands::job::Job;
+use crate::commands::options::RenderArgs;
 use crate::commands::options::SceneArgs;
 
 /// Follow one sample of one pixel ray by ray: each hit, the light, the next
@@ -51,9 +53,10 @@ inventory::submit! { VERB }
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = ProbeArgs::from_arg_matches(matches)?;
     let overrides = args.scene_options.overrides();
+    let options = RenderArgs::default();
     let (first, second) = (&args.first, &args.second);
-    let (scene, pixel) = match (&args.scene, &args.third) {
-        (Some(file), None) => (raycourse::load_scene(file, &overrides)?, [first, second]),
+    let (job, pixel) = match (&args.scene, &args.third) {
+        (Some(file), None) => (Job::of_file(file, &overrides, &options)?, [first, second]),
         (None, Some(third)) => {
             let (name, x, y) = (first, second, third);
             let stage = stages().find(|s| s.name == name.as_str()).ok_or_else(|| {
@@ -63,7 +66,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
                     names.join(", ")
                 ))
             })?;
-            (stage.scene(&overrides)?, [x, y])
+            (Job::of_stage(stage, &overrides, &options)?, [x, y])
         }
         (Some(_), _) => return Err(Failure::Input("with --scene, give only X Y".into())),
         (None, _) => {
@@ -73,7 +76,12 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         }
     };
     let [x, y] = pixel.map(|v| coordinate(v));
-    let found = probe(&scene, x?, y?, args.sample).map_err(Failure::input)?;
+    #[cfg(feature = "beyond")]
+    if let Some(what) = job.beyond.beyond_the_course() {
+        let refusal = format!("the probe follows the course's code; this scene asks for {what}");
+        return Err(Failure::Input(refusal));
+    }
+    let found = probe(&job.scene, x?, y?, args.sample).map_err(Failure::input)?;
     let text = if args.json {
         serde_json::to_string_pretty(&found)
             .map_err(|e| Failure::Machine(format!("cannot write the probe as JSON: {e}")))?

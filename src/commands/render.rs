@@ -6,6 +6,7 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
+use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
 use crate::commands::output::render_to_file;
 
@@ -30,11 +31,12 @@ inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = RenderFile::from_arg_matches(matches)?;
-    let scene = raycourse::load_scene(&args.scene, &args.options.overrides())?;
+    let options = &args.options;
+    let job = Job::of_file(&args.scene, &options.overrides(), options)?;
     let name = args
         .scene
         .file_stem()
         .map_or("scene".into(), |s| s.to_string_lossy());
     let out = Path::new("out").join(format!("{name}.png"));
-    render_to_file(&name, &scene, &args.options, out)
+    render_to_file(&name, &job, options, out)
 }

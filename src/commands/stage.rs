@@ -8,6 +8,7 @@ use clap::{Arg, ArgMatches, Args, FromArgMatches};
 use raycourse::{Stage, find_stage, scene_file::stage_names};
 
 use crate::commands::failure::Failure;
+use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
 use crate::commands::output::render_to_file;
 
@@ -38,7 +39,7 @@ pub fn run(session: u32, matches: &ArgMatches) -> Result<(), Failure> {
 /// Renders `stage` at its course settings, but for `options`, into
 /// `out/<stage>.png` unless `options.out` says otherwise.
 pub fn render_stage(stage: &Stage, options: &RenderArgs) -> Result<(), Failure> {
-    let scene = stage.scene(&options.overrides())?;
+    let job = Job::of_stage(stage, &options.overrides(), options)?;
     let out = Path::new("out").join(format!("{}.png", stage.name));
-    render_to_file(stage.name, &scene, options, out)
+    render_to_file(stage.name, &job, options, out)
 }

@@ -38,10 +38,6 @@ pub enum ProbeError {
         /// The samples a pixel takes.
         samples: u32,
     },
-    /// The scene renders with code beyond the course, which the probe does not follow.
-    #[cfg(feature = "beyond")]
-    #[error("the probe follows the course's code; this scene asks for {0}")]
-    Beyond(String),
 }
 
 /// Follows sample `sample` of pixel (`x`, `y`) of `scene`.
@@ -70,8 +66,7 @@ pub fn probe(scene: &Scene, x: u32, y: u32, sample: u32) -> Result<Probe, ProbeE
     })
 }
 
-/// Refuses a pixel outside the image and a sample past the last; beyond the course,
-/// a scene that renders with code the probe does not follow.
+/// Refuses a pixel outside the image and a sample past the last.
 fn check(scene: &Scene, x: u32, y: u32, sample: u32) -> Result<(), ProbeError> {
     let (width, height) = (scene.camera.width, scene.camera.height);
     if x >= width || y >= height {
@@ -85,10 +80,6 @@ fn check(scene: &Scene, x: u32, y: u32, sample: u32) -> Result<(), ProbeError> {
     let samples = scene.settings.samples;
     if sample >= samples {
         return Err(ProbeError::NoSuchSample { sample, samples });
-    }
-    #[cfg(feature = "beyond")]
-    if let Some(what) = scene.settings.beyond.beyond_the_course() {
-        return Err(ProbeError::Beyond(what));
     }
     Ok(())
 }

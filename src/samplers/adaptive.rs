@@ -3,7 +3,6 @@
 
 use crate::maths::{Colour, Real};
 use crate::render::samples::SampleMean;
-use crate::scene::Settings;
 
 /// With adaptive sampling, a pixel takes at most this many times the scene's sample
 /// count.
@@ -58,11 +57,12 @@ pub fn batch(samples: u32) -> u32 {
 }
 
 /// Whether adaptive sampling stops a pixel whose first `taken` samples have the
-/// estimate `estimate`: at the end of a batch whose relative error is at most the
-/// scene's `noise`. Never without adaptive sampling.
-pub fn precise_enough(settings: &Settings, estimate: &Estimate, taken: u32) -> bool {
-    settings.beyond.noise.is_some_and(|noise| {
-        taken.is_multiple_of(batch(settings.samples)) && estimate.relative_error() <= noise
+/// estimate `estimate`, in a scene of `samples` per pixel: at the end of a batch
+/// whose relative error is at most `noise`. Never without adaptive sampling
+/// (`noise` is `None`).
+pub fn precise_enough(noise: Option<Real>, samples: u32, estimate: &Estimate, taken: u32) -> bool {
+    noise.is_some_and(|noise| {
+        taken.is_multiple_of(batch(samples)) && estimate.relative_error() <= noise
     })
 }
 

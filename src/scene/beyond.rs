@@ -5,8 +5,10 @@
 
 use crate::maths::Real;
 
-/// How the random numbers of a pixel's samples are chosen (`[render] sampler`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// How the random numbers of a pixel's samples are chosen (`[render] sampler`:
+/// `"independent"`, `"stratified"` or `"sobol"`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum Sampler {
     /// Each number drawn independently of all others: the course's choice.
     #[default]

@@ -38,9 +38,5 @@ pub struct Settings {
     /// Past the bounce limit, the probability that a path goes on (Russian roulette,
     /// session 4); `None`: paths stop at the limit.
     pub russian_roulette: Option<Real>,
-    /// What a render uses beyond the course: another sampler, adaptive sampling,
-    /// the fast engine.
-    #[cfg(feature = "beyond")]
-    pub beyond: crate::scene::beyond::Beyond,
 }
 // ANCHOR_END: settings

@@ -1,27 +1,165 @@
 //! What a scene file may ask beyond the course: another sampler
 //! (`render.sampler`), adaptive sampling (`render.noise`) and the fast engine
 //! (`render.fast`, whose hierarchy has leaves of at most `render.leaf_size`
-//! triangles). The course's scene comes first; these settings go on top of it.
+//! triangles). These keys are taken out of the text's `[render]` table first; the
+//! rest is the course's scene file, read and built by the course's code.
 
+use std::num::NonZeroU16;
 use std::path::Path;
 use std::sync::Arc;
 
+use serde::Deserialize;
+use toml::Spanned;
+use toml::de::{DeTable, DeValue};
+
 use crate::fast::FastBvh;
-use crate::files::Files;
+use crate::files::{Disk, Files};
 use crate::maths::Real;
 use crate::maths::values::Positive;
 use crate::scene::Scene;
 use crate::scene::beyond::{Beyond, Sampler};
-use crate::scene_file::format::{AccelerationSpec, SamplerSpec, SceneFile};
-use crate::scene_file::{SceneError, session7};
+use crate::scene_file::format::{AccelerationSpec, SceneFile};
+use crate::scene_file::load::{checked, parse_table, read_table};
+use crate::scene_file::sessions::check_materials;
+use crate::scene_file::{Overrides, SceneError, Stage, session7};
 
-/// The course's scene of `file` with what it asks beyond the course: its sampler,
-/// its adaptive sampling's target, and with `render.fast` the fast engine, each mesh
-/// searched by the fast engine's hierarchy where `render.acceleration` asks for one.
-pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, SceneError> {
-    let r = &file.render;
-    let fast_bvh = r.fast && r.acceleration == AccelerationSpec::Bvh;
-    if r.leaf_size.is_some() && !fast_bvh {
+/// The keys of `[render]` beyond the course.
+#[derive(Clone, Copy, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BeyondKeys {
+    /// Most triangles in a leaf of the fast engine's hierarchy (default 8).
+    pub leaf_size: Option<NonZeroU16>,
+    /// How the random numbers of a pixel's samples are chosen (default
+    /// independent).
+    #[serde(default)]
+    pub sampler: Sampler,
+    /// Adaptive sampling's target: the relative standard error at which a pixel
+    /// stops taking samples (absent: every pixel takes `samples`).
+    pub noise: Option<Positive>,
+    /// Whether the fast engine renders (default false: the course's code; the same
+    /// image either way, the course's more slowly).
+    #[serde(default)]
+    pub fast: bool,
+}
+
+/// The names of [`BeyondKeys`] in a scene file's `[render]` table.
+const KEYS: [&str; 4] = ["leaf_size", "sampler", "noise", "fast"];
+
+/// A scene file's keys beyond the course, under `[render]` as in the file.
+#[derive(Deserialize)]
+struct BeyondFile {
+    #[serde(default)]
+    render: BeyondKeys,
+}
+
+/// Render settings beyond the course given on the command line, replacing those of
+/// the scene file.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BeyondOverrides {
+    /// Adaptive sampling's target relative standard error.
+    pub noise: Option<Real>,
+    /// Render with the fast engine; `false` leaves the scene file's choice.
+    pub fast: bool,
+}
+
+impl BeyondOverrides {
+    /// Puts the overrides into `keys`; an error names the key if the noise is not a
+    /// positive number.
+    fn apply(&self, keys: &mut BeyondKeys, path: &Path) -> Result<(), SceneError> {
+        if let Some(noise) = self.noise {
+            keys.noise =
+                Some(
+                    Positive::try_from(noise).map_err(|message| SceneError::Inconsistent {
+                        path: path.to_owned(),
+                        key: "render.noise".into(),
+                        message,
+                    })?,
+                );
+        }
+        keys.fast |= self.fast;
+        Ok(())
+    }
+}
+
+/// Reads and checks the scene file at `path` with `overrides` and `beyond` applied:
+/// the course's scene and what its render uses beyond the course.
+pub fn load_with_beyond(
+    path: &Path,
+    overrides: &Overrides,
+    beyond: &BeyondOverrides,
+) -> Result<(Scene, Beyond), SceneError> {
+    let source = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+        path: path.to_owned(),
+        source,
+    })?;
+    parse_with_beyond(&source, path, overrides, beyond, &Disk)
+}
+
+/// The scene of `stage` at the course's settings but for `overrides` and `beyond`,
+/// the files it refers to read from this crate's folder.
+pub fn stage_with_beyond(
+    stage: &Stage,
+    overrides: &Overrides,
+    beyond: &BeyondOverrides,
+) -> Result<(Scene, Beyond), SceneError> {
+    parse_with_beyond(stage.source, &stage.file(), overrides, beyond, &Disk)
+}
+
+/// Parses and checks scene-file text as the course's
+/// [`parse_scene_from`](crate::scene_file::parse_scene_from) does, its keys beyond
+/// the course taken out first and `beyond` applied to them: the course's scene, each
+/// mesh searched by the fast engine's hierarchy where `render.fast` and
+/// `render.acceleration` ask for one, and what its render uses beyond the course.
+pub fn parse_with_beyond(
+    source: &str,
+    path: &Path,
+    overrides: &Overrides,
+    beyond: &BeyondOverrides,
+    files: &dyn Files,
+) -> Result<(Scene, Beyond), SceneError> {
+    check_materials(source, path)?;
+    let mut table = parse_table(source, path)?;
+    let taken = take_keys(&mut table);
+    let mut keys = read_table::<BeyondFile>(taken, source, path)?.render;
+    beyond.apply(&mut keys, path)?;
+    let file = checked(read_table(table, source, path)?, path, overrides)?;
+    let scene = scene(&file, &keys, path, files)?;
+    let beyond = Beyond {
+        sampler: keys.sampler,
+        noise: keys.noise.map(|n| n.0),
+        fast: keys.fast,
+    };
+    Ok((scene, beyond))
+}
+
+/// Takes the keys beyond the course out of `table`'s `[render]` table, and returns
+/// them as a table of their own, under `render`, each with its span in the text.
+fn take_keys<'s>(table: &mut Spanned<DeTable<'s>>) -> Spanned<DeTable<'s>> {
+    let span = table.span();
+    let mut render = DeTable::new();
+    if let Some(DeValue::Table(course)) = table.get_mut().get_mut("render").map(|v| v.get_mut()) {
+        for key in KEYS {
+            if let Some((key, value)) = course.remove_entry(key) {
+                render.insert(key, value);
+            }
+        }
+    }
+    let mut taken = DeTable::new();
+    let render = Spanned::new(span.clone(), DeValue::Table(render));
+    taken.insert(Spanned::new(span.clone(), "render".into()), render);
+    Spanned::new(span, taken)
+}
+
+/// The course's scene of `file`, each mesh searched by the fast engine's hierarchy
+/// where `keys` ask for the fast engine and `render.acceleration` for a hierarchy.
+fn scene(
+    file: &SceneFile,
+    keys: &BeyondKeys,
+    path: &Path,
+    files: &dyn Files,
+) -> Result<Scene, SceneError> {
+    let fast_bvh = keys.fast && file.render.acceleration == AccelerationSpec::Bvh;
+    if keys.leaf_size.is_some() && !fast_bvh {
         return Err(SceneError::Inconsistent {
             path: path.to_owned(),
             key: "render.leaf_size".into(),
@@ -30,41 +168,16 @@ pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, 
                 .into(),
         });
     }
-    let mut scene = if fast_bvh {
-        // The course's hierarchy would be built only to be replaced.
-        let mut course = file.clone();
-        course.render.acceleration = AccelerationSpec::None;
-        session7::scene(&course, path, files)?
-    } else {
-        session7::scene(file, path, files)?
-    };
-    if fast_bvh {
-        let leaf_size = r.leaf_size.map_or(8, |l| l.get());
-        for mesh in &mut scene.meshes {
-            mesh.search = Arc::new(FastBvh::build(mesh, leaf_size));
-        }
+    if !fast_bvh {
+        return session7::scene(file, path, files);
     }
-    scene.settings.beyond = Beyond {
-        sampler: match r.sampler.unwrap_or_default() {
-            SamplerSpec::Independent => Sampler::Independent,
-            SamplerSpec::Stratified => Sampler::Stratified,
-            SamplerSpec::Sobol => Sampler::Sobol,
-        },
-        noise: r.noise.map(|n| n.0),
-        fast: r.fast,
-    };
+    // The course's hierarchy would be built only to be replaced.
+    let mut course = file.clone();
+    course.render.acceleration = AccelerationSpec::None;
+    let mut scene = session7::scene(&course, path, files)?;
+    let leaf_size = keys.leaf_size.map_or(8, NonZeroU16::get);
+    for mesh in &mut scene.meshes {
+        mesh.search = Arc::new(FastBvh::build(mesh, leaf_size));
+    }
     Ok(scene)
-}
-
-/// Puts the command line's `--noise` and `--fast` into `file`; an error names the
-/// key if the noise is not a positive number.
-pub fn apply_overrides(
-    (noise, fast): (Option<Real>, bool),
-    file: &mut SceneFile,
-) -> Result<(), (&'static str, String)> {
-    if let Some(noise) = noise {
-        file.render.noise = Some(Positive::try_from(noise).map_err(|e| ("render.noise", e))?);
-    }
-    file.render.fast |= fast;
-    Ok(())
 }

@@ -111,21 +111,6 @@ pub enum TriangleTestSpec {
     Watertight,
 }
 
-#[cfg(feature = "beyond")]
-/// `sampler = "independent"`, `"stratified"` or `"sobol"`: how the random numbers
-/// of a pixel's samples are chosen.
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
-#[serde(rename_all = "kebab-case")]
-pub enum SamplerSpec {
-    /// Independent numbers: the course's (the default).
-    #[default]
-    Independent,
-    /// Stratified numbers: one sample in each stratum.
-    Stratified,
-    /// Owen-scrambled Sobol points.
-    Sobol,
-}
-
 /// `[render]`: image size and how the render is done.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -165,24 +150,6 @@ pub struct RenderSpec {
     pub acceleration: AccelerationSpec,
     /// Which ray-triangle test meshes use (session 5; default watertight).
     pub triangle_test: Option<TriangleTestSpec>,
-    /// Most triangles in a leaf of the fast engine's hierarchy, beyond the course
-    /// (default 8).
-    #[cfg(feature = "beyond")]
-    pub leaf_size: Option<std::num::NonZeroU16>,
-    /// How the random numbers of a pixel's samples are chosen, beyond the course
-    /// (default independent).
-    #[cfg(feature = "beyond")]
-    pub sampler: Option<SamplerSpec>,
-    /// Adaptive sampling's target: the relative standard error at which a pixel
-    /// stops taking samples, beyond the course (absent: every pixel takes
-    /// `samples`).
-    #[cfg(feature = "beyond")]
-    pub noise: Option<Positive>,
-    /// Whether the fast engine renders, beyond the course (default false: the
-    /// course's code; the same image either way, the course's more slowly).
-    #[cfg(feature = "beyond")]
-    #[serde(default)]
-    pub fast: bool,
 }
 
 fn one() -> NonZeroU32 {

@@ -4,6 +4,10 @@
 use std::num::NonZeroU32;
 use std::path::Path;
 
+use serde::de::DeserializeOwned;
+use toml::Spanned;
+use toml::de::DeTable;
+
 use crate::files::{Disk, Files};
 use crate::maths::Real;
 use crate::maths::values::Finite;
@@ -13,8 +17,6 @@ use crate::scene_file::format::SceneFile;
 use crate::scene_file::sessions::{check_materials, check_sessions};
 use crate::scene_file::{SceneError, one_line};
 
-#[cfg(feature = "beyond")]
-use crate::scene_file::beyond::scene;
 #[cfg(not(feature = "s3"))]
 use crate::scene_file::session1::scene;
 #[cfg(all(feature = "s3", not(feature = "s4")))]
@@ -25,7 +27,7 @@ use crate::scene_file::session4::scene;
 use crate::scene_file::session5::scene;
 #[cfg(all(feature = "s6", not(feature = "s7")))]
 use crate::scene_file::session6::scene;
-#[cfg(all(feature = "s7", not(feature = "beyond")))]
+#[cfg(feature = "s7")]
 use crate::scene_file::session7::scene;
 
 /// Render settings given on the command line, replacing those of the scene file
@@ -44,24 +46,15 @@ pub struct Overrides {
     pub seed: Option<u64>,
     /// The camera's plunge angle in degrees (the animation's variable).
     pub plunge: Option<Real>,
-    /// Adaptive sampling's target relative standard error, beyond the course.
-    #[cfg(feature = "beyond")]
-    pub noise: Option<Real>,
-    /// Render with the fast engine, beyond the course; `false` leaves the scene
-    /// file's choice.
-    #[cfg(feature = "beyond")]
-    pub fast: bool,
 }
 
 impl Overrides {
     /// Puts the overrides into `file`; an error names the key if the plunge is not a
-    /// finite angle or the noise not a positive number.
+    /// finite angle.
     pub fn apply(&self, file: &mut SceneFile) -> Result<(), (&'static str, String)> {
         if let Some(p) = self.plunge {
             file.camera.plunge = Some(Finite::try_from(p).map_err(|e| ("camera.plunge", e))?);
         }
-        #[cfg(feature = "beyond")]
-        crate::scene_file::beyond::apply_overrides((self.noise, self.fast), file)?;
         let r = &mut file.render;
         r.width = self.width.unwrap_or(r.width);
         r.height = self.height.unwrap_or(r.height);
@@ -101,7 +94,19 @@ pub fn parse_scene_from(
     files: &dyn Files,
 ) -> Result<Scene, SceneError> {
     check_materials(source, path)?;
-    let mut file = read_file(source, path)?;
+    let file = read_table(parse_table(source, path)?, source, path)?;
+    let file = checked(file, path, overrides)?;
+    scene(&file, path, files)
+}
+// ANCHOR_END: parse_scene
+
+/// `file` with `overrides` applied, checked against this build's sessions and for
+/// consistency.
+pub fn checked(
+    mut file: SceneFile,
+    path: &Path,
+    overrides: &Overrides,
+) -> Result<SceneFile, SceneError> {
     overrides
         .apply(&mut file)
         .map_err(|(key, message)| SceneError::Inconsistent {
@@ -111,30 +116,46 @@ pub fn parse_scene_from(
         })?;
     check_sessions(&file, path)?;
     check_consistency(&file, path)?;
-    scene(&file, path, files)
+    Ok(file)
 }
-// ANCHOR_END: parse_scene
 
-/// The scene-file text `source` read as TOML into a [`SceneFile`]; an error names
-/// the line, the column and the key.
-fn read_file(source: &str, path: &Path) -> Result<SceneFile, SceneError> {
-    let invalid = |span: Option<std::ops::Range<usize>>, key: String, message: &str| {
-        let (line, column) = line_and_column(source, span.map_or(0, |s| s.start));
-        SceneError::Invalid {
-            path: path.to_owned(),
-            line,
-            column,
-            key,
-            message: one_line(message),
-        }
-    };
-    let deserializer = toml::Deserializer::parse(source)
-        .map_err(|e| invalid(e.span(), String::new(), e.message()))?;
-    serde_path_to_error::deserialize(deserializer).map_err(|e| {
+/// The scene-file text `source` parsed as TOML, each key and value with the span of
+/// text it came from; an error names the line and the column.
+pub fn parse_table<'s>(source: &'s str, path: &Path) -> Result<Spanned<DeTable<'s>>, SceneError> {
+    DeTable::parse(source).map_err(|e| invalid(source, path, e.span(), String::new(), e.message()))
+}
+
+/// The TOML `table` parsed from `source` read as a `T` (a [`SceneFile`]); an error
+/// names the line, the column and the key.
+pub fn read_table<T: DeserializeOwned>(
+    table: Spanned<DeTable>,
+    source: &str,
+    path: &Path,
+) -> Result<T, SceneError> {
+    serde_path_to_error::deserialize(toml::Deserializer::from(table)).map_err(|e| {
         let key = e.path().to_string();
         let inner = e.into_inner();
-        invalid(inner.span(), key, inner.message())
+        invalid(source, path, inner.span(), key, inner.message())
     })
+}
+
+/// The error of an invalid scene file: the text at `span` of `source`, read from
+/// `path`, is not what `key` takes.
+fn invalid(
+    source: &str,
+    path: &Path,
+    span: Option<std::ops::Range<usize>>,
+    key: String,
+    message: &str,
+) -> SceneError {
+    let (line, column) = line_and_column(source, span.map_or(0, |s| s.start));
+    SceneError::Invalid {
+        path: path.to_owned(),
+        line,
+        column,
+        key,
+        message: one_line(message),
+    }
 }
 
 /// 1-based line and column of byte `offset` in `source`.

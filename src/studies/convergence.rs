@@ -7,6 +7,7 @@ use crate::engines::render_reporting;
 use crate::maths::Real;
 use crate::render::Film;
 use crate::scene::Scene;
+use crate::scene::beyond::Beyond;
 
 /// How far an image is from the reference, over every pixel and channel of linear
 /// radiance.
@@ -153,12 +154,12 @@ pub fn read_rungs(text: &str) -> Result<Vec<Rung>, String> {
         .collect()
 }
 
-/// Renders `scene` at each sample count of `ladder` on the current thread pool and
-/// measures each image against `reference`, reporting to `progress` as
-/// [`render_reporting`] does.
+/// Renders `scene` with the settings `beyond` at each sample count of `ladder` on
+/// the current thread pool and measures each image against `reference`, reporting
+/// to `progress` as [`render_reporting`] does.
 pub fn climb(
     variant: &str,
-    mut scene: Scene,
+    (mut scene, beyond): (Scene, Beyond),
     ladder: &[u32],
     reference: &Film,
     progress: &(dyn Fn(u64) + Sync),
@@ -168,7 +169,7 @@ pub fn climb(
         .map(|&samples| {
             scene.settings.samples = samples;
             let start = Instant::now();
-            let image = render_reporting(&scene, progress);
+            let image = render_reporting(&scene, &beyond, progress);
             let seconds = start.elapsed().as_secs_f64() as Real;
             Rung {
                 variant: variant.to_owned(),

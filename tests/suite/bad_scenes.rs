@@ -278,26 +278,28 @@ fn russian_roulette_survival_is_a_probability() {
 #[cfg(feature = "beyond")]
 #[test]
 fn samplers_are_named_and_noise_is_positive() {
-    let error = |line: &str, overrides: &Overrides| {
+    use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
+    let error = |line: &str, beyond: &BeyondOverrides| {
         let text = GOOD.replace("height = 48", &format!("height = 48\n{line}"));
-        parse_scene(&text, Path::new("room.toml"), overrides).map(|_| ())
+        let path = Path::new("room.toml");
+        parse_with_beyond(&text, path, &Overrides::default(), beyond, &raycourse::Disk).map(|_| ())
     };
-    let halton = error("sampler = \"halton\"", &Overrides::default()).unwrap_err();
+    let halton = error("sampler = \"halton\"", &BeyondOverrides::default()).unwrap_err();
     assert_eq!(
         halton.to_string(),
         "room.toml:5:11: key `render.sampler`: unknown variant `halton`, expected one of \
          `independent`, `stratified`, `sobol`"
     );
-    let negative = error("noise = -0.1", &Overrides::default()).unwrap_err();
+    let negative = error("noise = -0.1", &BeyondOverrides::default()).unwrap_err();
     assert!(
         negative
             .to_string()
             .starts_with("room.toml:5:9: key `render.noise`: expected a number greater than 0"),
         "{negative}"
     );
-    let from_the_command_line = Overrides {
+    let from_the_command_line = BeyondOverrides {
         noise: Some(0.0),
-        ..Overrides::default()
+        ..BeyondOverrides::default()
     };
     assert!(
         error("", &from_the_command_line)
@@ -305,5 +307,5 @@ fn samplers_are_named_and_noise_is_positive() {
             .to_string()
             .starts_with("room.toml: key `render.noise`: expected a number greater than 0"),
     );
-    assert!(error("sampler = \"sobol\"", &Overrides::default()).is_ok());
+    assert!(error("sampler = \"sobol\"", &BeyondOverrides::default()).is_ok());
 }

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use crate::common::{run, run_in_locale, text};
 use image::RgbImage;
-use raycourse::check::expected::Source;
+use raycourse::check::expected::{Renderer, Source};
 use raycourse::check::report::{Report, Verdict, check};
 use raycourse::geometry::Ray;
 use raycourse::integrator::Tracer;
@@ -16,7 +16,7 @@ use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::maths::{Colour, PI, Real, pixel_rng};
 use raycourse::render::film::display;
-use raycourse::{Overrides, Scene, Stage, encode_png, parse_scene, render, stages};
+use raycourse::{Overrides, Scene, Stage, encode_png, stages};
 
 /// Width and height of the images checked.
 const SIZE: u32 = 64;
@@ -32,9 +32,8 @@ fn scene(stage: &Stage, edit: &dyn Fn(&str) -> String, seed: u64, samples: Optio
     scene_at(stage, edit, (seed, samples), SIZE)
 }
 
-/// [`scene`] at `size` x `size` pixels, its meshes searched by a hierarchy and
-/// (beyond the course) rendered by the fast engine, which give the course's bytes
-/// in less time.
+/// [`scene`] at `size` x `size` pixels, its meshes searched by a hierarchy, read
+/// by [`RENDERER`].
 fn scene_at(
     stage: &Stage,
     edit: &dyn Fn(&str) -> String,
@@ -46,8 +45,6 @@ fn scene_at(
         height: NonZeroU32::new(size),
         samples: samples.and_then(NonZeroU32::new),
         seed: Some(seed),
-        #[cfg(feature = "beyond")]
-        fast: true,
         ..Overrides::default()
     };
     let mut file: toml::Table = edit(stage.source).parse().unwrap();
@@ -56,12 +53,23 @@ fn scene_at(
         .unwrap()
         .insert("acceleration".into(), "bvh".into());
     let text = toml::to_string(&file).unwrap();
-    parse_scene(&text, &stage.file(), &overrides).unwrap()
+    RENDERER
+        .scene(&text, &stage.file(), &overrides, &raycourse::Disk)
+        .unwrap()
 }
+
+/// What renders the references and the students' images: the fast engine where the
+/// build has it, which gives the course's bytes in less time.
+#[cfg(feature = "beyond")]
+const RENDERER: &dyn Renderer = &raycourse::engines::Fast;
+/// What renders the references and the students' images: the course's code.
+#[cfg(not(feature = "beyond"))]
+const RENDERER: &dyn Renderer = &raycourse::check::expected::Course;
 
 /// A student's image: the scene rendered by the crate, written as a PNG and read back.
 fn picture(scene: &Scene) -> RgbImage {
-    let png = encode_png(&render(scene).film, scene.settings.gamma);
+    let film = RENDERER.render(scene, &|_| {}).film;
+    let png = encode_png(&film, scene.settings.gamma);
     image::load_from_memory(&png).unwrap().to_rgb8()
 }
 
@@ -73,6 +81,7 @@ fn checked(stage: &Stage, image: &RgbImage, cache: &Path) -> Report {
         cache,
         files: &raycourse::Disk,
         progress: &|_| {},
+        renderer: RENDERER,
     };
     check(&source, image, false).unwrap()
 }
@@ -134,6 +143,7 @@ fn every_deterministic_stage_passes_as_a_jpeg_of_quality_85() {
             cache: &cache,
             files: &raycourse::Disk,
             progress: &|_| {},
+            renderer: RENDERER,
         };
         check(&source, &read, true).unwrap()
     };

@@ -6,25 +6,30 @@
 
 use std::num::NonZeroU32;
 
+use raycourse::engines::render;
 use raycourse::fast::paths::paths_at_once;
-use raycourse::scene::beyond::Sampler;
-use raycourse::{Overrides, Render, Scene, Stage, render, stages};
+use raycourse::scene::beyond::{Beyond, Sampler};
+use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond, stage_with_beyond};
+use raycourse::{Disk, Overrides, Render, Scene, Stage, stages};
+
+/// A scene and its settings beyond the course.
+type Job = (Scene, Beyond);
 
 /// The scene of `stage` at 30 x 9 pixels (30 is not a multiple of four, so rows end
-/// with fewer than four paths), at most `samples` samples per pixel, with the stage's
-/// sampler or `sampler`.
-fn small(stage: &Stage, samples: u32, extra: Overrides, sampler: Option<Sampler>) -> Scene {
+/// with fewer than four paths), at most `samples` samples per pixel, with `extra`
+/// and the stage's sampler or `sampler`.
+fn small(stage: &Stage, samples: u32, extra: BeyondOverrides, sampler: Option<Sampler>) -> Job {
     let overrides = Overrides {
         width: NonZeroU32::new(30),
         height: NonZeroU32::new(9),
         samples: NonZeroU32::new(samples),
-        ..extra
+        ..Overrides::default()
     };
-    let mut scene = stage.scene(&overrides).unwrap();
+    let (scene, mut beyond) = stage_with_beyond(stage, &overrides, &extra).unwrap();
     if let Some(sampler) = sampler {
-        scene.settings.beyond.sampler = sampler;
+        beyond.sampler = sampler;
     }
-    scene
+    (scene, beyond)
 }
 
 /// Renders `stage` both ways and asserts that the two renders agree; returns the
@@ -32,38 +37,34 @@ fn small(stage: &Stage, samples: u32, extra: Overrides, sampler: Option<Sampler>
 fn same(
     stage: &Stage,
     samples: u32,
-    extra: Overrides,
+    extra: BeyondOverrides,
     sampler: Option<Sampler>,
 ) -> (Scene, Render) {
     let course = small(stage, samples, extra, sampler);
     assert!(
-        !course.settings.beyond.fast,
+        !course.1.fast,
         "{}: the default is the course's code",
         stage.name
     );
     let fast = small(
         stage,
         samples,
-        Overrides {
+        BeyondOverrides {
             fast: true,
             ..extra
         },
         sampler,
     );
-    assert!(
-        fast.settings.beyond.fast,
-        "{}: --fast is obeyed",
-        stage.name
-    );
+    assert!(fast.1.fast, "{}: --fast is obeyed", stage.name);
     let render = agree(stage.name, &course, &fast);
-    (fast, render)
+    (fast.0, render)
 }
 
 /// Renders `course` and `fast`, the same scene without and with the fast engine,
 /// asserts that they give the same radiance to the bit and the same counts, and
 /// returns the fast engine's render.
-fn agree(name: &str, course: &Scene, fast: &Scene) -> Render {
-    let (by_course, by_fast) = (render(course), render(fast));
+fn agree(name: &str, course: &Job, fast: &Job) -> Render {
+    let (by_course, by_fast) = (render(&course.0, &course.1), render(&fast.0, &fast.1));
     let bits = |r: &Render| -> Vec<_> {
         r.film
             .pixels
@@ -106,7 +107,7 @@ const DIFFUSE_STAGES: [&str; 17] = [
 fn every_stage_renders_the_same_bytes_with_the_fast_engine() {
     let mut four_at_a_time = vec![];
     for stage in stages() {
-        let (scene, _) = same(stage, 4, Overrides::default(), None);
+        let (scene, _) = same(stage, 4, BeyondOverrides::default(), None);
         if paths_at_once::applies(&scene) {
             four_at_a_time.push(stage.name);
         }
@@ -134,9 +135,9 @@ fn every_stage_renders_the_same_bytes_with_the_fast_engine() {
 
 #[test]
 fn adaptive_sampling_stops_each_pixel_at_the_same_sample() {
-    let adaptive = Overrides {
+    let adaptive = BeyondOverrides {
         noise: Some(0.05),
-        ..Overrides::default()
+        ..BeyondOverrides::default()
     };
     let stage = stages().find(|s| s.name == "antialiasing").unwrap();
     let (scene, render) = same(stage, 16, adaptive, None);
@@ -156,7 +157,7 @@ fn stratified_and_sobol_numbers_are_drawn_in_the_course_order() {
             continue;
         };
         for sampler in [Sampler::Stratified, Sampler::Sobol] {
-            let (scene, _) = same(stage, 8, Overrides::default(), Some(sampler));
+            let (scene, _) = same(stage, 8, BeyondOverrides::default(), Some(sampler));
             assert!(paths_at_once::applies(&scene), "{name}");
         }
     }
@@ -182,19 +183,23 @@ fn meshes_cast_the_same_shadows_under_a_point_light() {
                 width: NonZeroU32::new(24),
                 height: NonZeroU32::new(20),
                 samples: NonZeroU32::new(2),
-                fast,
                 ..Overrides::default()
             };
-            raycourse::parse_scene(&source, &path, &overrides).unwrap()
+            let fast = BeyondOverrides {
+                fast,
+                ..BeyondOverrides::default()
+            };
+            parse_with_beyond(&source, &path, &overrides, &fast, &Disk).unwrap()
         };
         let (course, fast) = (scene(false), scene(true));
         assert!(
             course
+                .0
                 .light
                 .is_some_and(|l| matches!(l, raycourse::lights::Light::Point(_)))
         );
         assert!(
-            course.settings.shadows && paths_at_once::applies(&fast),
+            course.0.settings.shadows && paths_at_once::applies(&fast.0),
             "{name}"
         );
         let render = agree(name, &course, &fast);

@@ -152,14 +152,18 @@ fn the_bounce_limit_biases_a_grey_enclosure_low() {
 #[cfg(feature = "beyond")]
 #[test]
 fn russian_roulette_removes_the_bias_with_every_sampler() {
-    use raycourse::scene::beyond::Sampler;
+    use raycourse::scene::beyond::{Beyond, Sampler};
     for sampler in [Sampler::Independent, Sampler::Stratified, Sampler::Sobol] {
-        let mut scene = furnace(0.5, 1.0, None, settings(2, Some(0.6)));
-        scene.settings.beyond.sampler = sampler;
+        let scene = furnace(0.5, 1.0, None, settings(2, Some(0.6)));
+        let beyond = Beyond {
+            sampler,
+            ..Beyond::default()
+        };
         let mut tracer = Tracer::new(&scene);
         let mut all: Vec<Real> = vec![];
         for (row, column) in (0..SIZE).flat_map(|r| (0..SIZE).map(move |c| (r, c))) {
-            let samples = raycourse::samplers::pixel::pixel_samples(&mut tracer, row, column);
+            let samples =
+                raycourse::samplers::pixel::pixel_samples(&mut tracer, &beyond, row, column);
             all.extend(samples.map(|c| c.x));
         }
         let (mean, error) = mean_and_error(&all);

@@ -305,3 +305,28 @@ fn a_scene_file_is_probed_like_its_stage() {
         text(&out.stderr)
     );
 }
+
+/// The probe follows the course's code: a scene file that asks for the fast engine
+/// or a sampler beyond the course is refused with exit 2, naming what it asks for.
+#[cfg(feature = "beyond")]
+#[test]
+fn a_scene_beyond_the_course_is_not_probed() {
+    let dir = tempfile::tempdir().unwrap();
+    let shading = include_str!("../../sessions/s1/shading.toml");
+    let file = dir.path().join("fast.toml");
+    let text_of = shading.replace("[render]", "[render]\nfast = true\nsampler = \"sobol\"");
+    std::fs::write(&file, text_of).unwrap();
+    let out = run(
+        &["probe", "--scene", file.to_str().unwrap(), "8", "5"],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        text(&out.stderr).contains(
+            "the probe follows the course's code; this scene asks for the sampler Sobol and \
+             the fast engine (--fast)"
+        ),
+        "{}",
+        text(&out.stderr)
+    );
+}

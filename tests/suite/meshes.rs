@@ -317,17 +317,22 @@ fn mesh_stages_render_the_same_bytes_whatever_the_search() {
     #[cfg(feature = "beyond")]
     {
         // The fast engine's hierarchy, with the BVH stage's watertight triangles.
+        use raycourse::scene_file::beyond::{BeyondOverrides, stage_with_beyond};
         let stage = find_stage(6, "bvh").unwrap();
-        let fast = Overrides {
+        let fast = BeyondOverrides {
             fast: true,
-            ..overrides
+            ..BeyondOverrides::default()
         };
-        let fast = stage.scene(&fast).unwrap();
-        assert_eq!(fast.meshes[0].search.name(), "fast");
+        let (scene, beyond) = stage_with_beyond(stage, &overrides, &fast).unwrap();
+        assert_eq!(scene.meshes[0].search.name(), "fast");
+        let fast = raycourse::engines::render(&scene, &beyond).film;
         let bvh = stage.scene(&overrides).unwrap();
-        let image =
-            |scene: &raycourse::Scene| encode_png(&render(scene).film, scene.settings.gamma);
-        assert_eq!(image(&fast), image(&bvh), "fast BVH");
+        let image = |film, scene: &raycourse::Scene| encode_png(film, scene.settings.gamma);
+        assert_eq!(
+            image(&fast, &scene),
+            image(&render(&bvh).film, &bvh),
+            "fast BVH"
+        );
     }
 }
 
@@ -379,27 +384,33 @@ fn malformed_obj_files_are_told_in_the_formats_words() {
 #[cfg(feature = "beyond")]
 #[test]
 fn a_scaled_scene_with_the_fast_hierarchy_renders_like_the_unscaled_one() {
+    use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
     use raycourse::studies::scale::scaled;
-    use raycourse::{encode_png, find_stage, render};
+    use raycourse::{Disk, encode_png, find_stage};
     use std::num::NonZeroU32;
 
     let stage = find_stage(6, "bvh").unwrap();
-    let fast = stage.source;
+    let bvh = stage.source;
     let overrides = Overrides {
         width: NonZeroU32::new(48),
         height: NonZeroU32::new(48),
         samples: NonZeroU32::new(1),
-        fast: true,
         ..Overrides::default()
     };
+    let fast = BeyondOverrides {
+        fast: true,
+        ..BeyondOverrides::default()
+    };
     let pixels = |text: &str| {
-        let scene = parse_scene(text, &stage.file(), &overrides).unwrap();
+        let path = stage.file();
+        let (scene, beyond) = parse_with_beyond(text, &path, &overrides, &fast, &Disk).unwrap();
         assert_eq!(scene.meshes[0].search.name(), "fast");
-        let png = encode_png(&render(&scene).film, scene.settings.gamma);
+        let film = raycourse::engines::render(&scene, &beyond).film;
+        let png = encode_png(&film, scene.settings.gamma);
         image::load_from_memory(&png).unwrap().to_rgb8().into_raw()
     };
-    let small = pixels(fast);
-    let large = pixels(&scaled(fast, 10.0, Vec3::new(3.0, -2.0, 5.0)).unwrap());
+    let small = pixels(bvh);
+    let large = pixels(&scaled(bvh, 10.0, Vec3::new(3.0, -2.0, 5.0)).unwrap());
     let differing = small
         .chunks_exact(3)
         .zip(large.chunks_exact(3))

@@ -9,8 +9,9 @@ use raycourse::integrator::Tracer;
 use raycourse::maths::{Real, uniform, uniform_pair};
 use raycourse::samplers::adaptive::Estimate;
 use raycourse::samplers::pixel::{pixel_samples, sampler_rng, start_sample};
-use raycourse::scene::beyond::Sampler;
-use raycourse::{Overrides, Render, Scene, find_stage, render};
+use raycourse::scene::beyond::{Beyond, Sampler};
+use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
+use raycourse::{Disk, Overrides, Render, Scene, find_stage};
 use statrs::distribution::{ChiSquared, ContinuousCDF};
 
 /// The chi-square p-value of `points` of the unit square against the uniform
@@ -68,7 +69,7 @@ fn every_sampler_is_uniform_over_many_pixels() {
 }
 
 /// A stage of session 4 at 48 x 48 with `edits` to its `[render]` table.
-fn stage(name: &str, samples: u32, seed: u64, render_keys: &str) -> Scene {
+fn stage(name: &str, samples: u32, seed: u64, render_keys: &str) -> (Scene, Beyond) {
     let stage = find_stage(4, name).unwrap();
     let source = stage
         .source
@@ -81,7 +82,13 @@ fn stage(name: &str, samples: u32, seed: u64, render_keys: &str) -> Scene {
         seed: Some(seed),
         ..Overrides::default()
     };
-    raycourse::parse_scene(&source, &stage.file(), &overrides).unwrap()
+    let beyond = BeyondOverrides::default();
+    parse_with_beyond(&source, &stage.file(), &overrides, &beyond, &Disk).unwrap()
+}
+
+/// `job`'s scene rendered with its settings beyond the course.
+fn render(job: &(Scene, Beyond)) -> Render {
+    raycourse::engines::render(&job.0, &job.1)
 }
 
 /// The mean of each colour channel's sum over the image, and the image's squared
@@ -169,8 +176,8 @@ fn an_adaptive_pixel_stops_when_its_mean_is_precise_and_not_before() {
         .position(|&n| n > 4 && n < 64)
         .expect("a pixel stopped early");
     let (row, column) = (pixel as u32 / 48, pixel as u32 % 48);
-    let mut tracer = Tracer::new(&scene);
-    let values: Vec<_> = pixel_samples(&mut tracer, row, column).collect();
+    let mut tracer = Tracer::new(&scene.0);
+    let values: Vec<_> = pixel_samples(&mut tracer, &scene.1, row, column).collect();
     let mut estimate = Estimate::default();
     for (i, value) in values.iter().enumerate().take(taken[pixel] as usize) {
         estimate.add(*value);

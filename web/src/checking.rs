@@ -85,6 +85,7 @@ pub fn checked(
         cache: std::path::Path::new(""),
         files: assets::stage_files(),
         progress: &count,
+        renderer: &raycourse::engines::Fast,
     };
     let report = check(&source, &image, lossy).map_err(|e| e.to_string())?;
     let picture = report.difference_image(&image);

@@ -11,6 +11,7 @@ use crate::maths::{Colour, PI, Real, uniform_pair};
 use crate::samplers::adaptive::{Estimate, precise_enough};
 use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
+use crate::scene::beyond::Beyond;
 
 /// How many paths one thread follows at once: one per lane of
 /// a kind of lanes ([`RealSource`](crate::fast::simd::real_lanes::RealSource)).
@@ -76,6 +77,8 @@ pub(crate) struct Path<'s> {
     /// How many samples the pixel may take, and how many it has taken.
     count: u32,
     pub(crate) taken: u32,
+    /// Adaptive sampling's target relative standard error, if any.
+    noise: Option<Real>,
     /// The mean of its finished samples, and their spread.
     pub(crate) estimate: Estimate,
     /// The ray to follow next, and the bounces left after its hit.
@@ -93,10 +96,11 @@ pub(crate) struct Path<'s> {
 }
 
 impl<'s> Path<'s> {
-    /// Pixel (`row`, `column`) of `scene`, its first sample's camera ray ready.
-    pub(crate) fn new(scene: &'s Scene, row: u32, column: u32) -> Self {
+    /// Pixel (`row`, `column`) of `scene` with the settings `beyond`, its first
+    /// sample's camera ray ready.
+    pub(crate) fn new(scene: &'s Scene, beyond: &Beyond, row: u32, column: u32) -> Self {
         let mut tracer = Tracer::new(scene);
-        let count = start_pixel(&mut tracer, row, column);
+        let count = start_pixel(&mut tracer, beyond, row, column);
         let ray = camera_sample(&mut tracer, row, column, 0);
         Path {
             tracer,
@@ -104,6 +108,7 @@ impl<'s> Path<'s> {
             column,
             count,
             taken: 0,
+            noise: beyond.noise,
             estimate: Estimate::default(),
             ray,
             bounces: scene.settings.bounces,
@@ -123,7 +128,12 @@ impl<'s> Path<'s> {
     /// Whether the pixel has all its samples.
     pub(crate) fn pixel_done(&self) -> bool {
         self.taken == self.count
-            || precise_enough(&self.tracer.scene.settings, &self.estimate, self.taken)
+            || precise_enough(
+                self.noise,
+                self.tracer.scene.settings.samples,
+                &self.estimate,
+                self.taken,
+            )
     }
 
     /// Counts the ray, whose nearest sphere is `nearest` and whose hit on it is

@@ -32,6 +32,7 @@ use crate::fast::simd::real_lanes::RealSource;
 use crate::materials::Material;
 use crate::maths::Colour;
 use crate::scene::Scene;
+use crate::scene::beyond::Beyond;
 
 /// Whether [`row`] can render `scene`: every sphere diffuse (a mesh always is), and
 /// shadow rays offset as the crate offsets them, not by a fixed `epsilon`.
@@ -41,14 +42,15 @@ pub fn applies(scene: &Scene) -> bool {
     scene.spheres.iter().all(diffuse) && scene.settings.shadow_offset.is_none()
 }
 
-/// Renders row `row` of `scene`, whose spheres are `spheres`, into `line` (each
-/// pixel's radiance) and `taken` (its number of samples), `PATHS` (four) pixels at a
-/// time, the next pixel starting where one
-/// is done; returns the rays traced and the samples dropped as not finite, as
+/// Renders row `row` of `scene`, whose spheres are `spheres`, with the settings
+/// `beyond`, into `line` (each pixel's radiance) and `taken` (its number of
+/// samples), `PATHS` (four) pixels at a time, the next pixel starting where one is
+/// done; returns the rays traced and the samples dropped as not finite, as
 /// [`Tracer`](crate::integrator::Tracer) counts them. The row runs on the lanes
 /// that `spheres` chose, the fastest the processor has.
 pub fn row(
     scene: &Scene,
+    beyond: &Beyond,
     spheres: &SphereLanes,
     row: u32,
     line: &mut [Colour],
@@ -56,6 +58,7 @@ pub fn row(
 ) -> (u64, u64) {
     let work = Row {
         scene,
+        beyond,
         spheres,
         row,
         line,
@@ -67,6 +70,7 @@ pub fn row(
 /// A row to render, and where its pixels go: [`row`]'s arguments.
 struct Row<'a> {
     scene: &'a Scene,
+    beyond: &'a Beyond,
     spheres: &'a SphereLanes,
     row: u32,
     line: &'a mut [Colour],
@@ -78,32 +82,26 @@ impl OnLanes for Row<'_> {
 
     #[inline(always)]
     fn on<L: LaneKind>(self, lanes: L) -> (u64, u64) {
-        let Row {
-            scene,
-            spheres,
-            row,
-            line,
-            taken,
-        } = self;
-        row_on(lanes, scene, spheres, row, line, taken)
+        row_on(lanes, self)
     }
 }
 
 /// [`row`] on `lanes`.
 #[inline(always)]
-fn row_on<L: RealSource>(
-    lanes: L,
-    scene: &Scene,
-    spheres: &SphereLanes,
-    row: u32,
-    line: &mut [Colour],
-    taken: &mut [u32],
-) -> (u64, u64) {
+fn row_on<L: RealSource>(lanes: L, work: Row) -> (u64, u64) {
+    let Row {
+        scene,
+        beyond,
+        spheres,
+        row,
+        line,
+        taken,
+    } = work;
     let mut columns = 0..line.len() as u32;
     let mut paths: Vec<Path> = columns
         .by_ref()
         .take(PATHS)
-        .map(|column| Path::new(scene, row, column))
+        .map(|column| Path::new(scene, beyond, row, column))
         .collect();
     let (mut rays, mut dropped) = (0, 0);
     while !paths.is_empty() {
@@ -118,7 +116,7 @@ fn row_on<L: RealSource>(
             dropped += u64::from(path.estimate.mean.dropped);
             columns
                 .next()
-                .map(|column| *path = Path::new(scene, row, column))
+                .map(|column| *path = Path::new(scene, beyond, row, column))
                 .is_some()
         });
     }

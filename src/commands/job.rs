@@ -1,0 +1,57 @@
+//! What a command renders: a scene, with the settings beyond the course that its
+//! file and the options ask for where this build has them (read in
+//! `commands/beyond.rs`; without them, in `course` below).
+
+use raycourse::Scene;
+
+/// A scene to render, and how.
+pub struct Job {
+    /// The scene, at the course's settings but for the options'.
+    pub scene: Scene,
+    /// What its render uses beyond the course.
+    #[cfg(feature = "beyond")]
+    pub beyond: raycourse::scene::beyond::Beyond,
+}
+
+/// A job in a build without what goes beyond the course: the scene, rendered by the
+/// course's code.
+#[cfg(not(feature = "beyond"))]
+mod course {
+    use std::path::Path;
+
+    use raycourse::{Overrides, Render, Stage};
+
+    use crate::commands::failure::Failure;
+    use crate::commands::job::Job;
+    use crate::commands::options::RenderArgs;
+
+    impl Job {
+        /// The scene file at `path` with `overrides`; `_options` asks for nothing
+        /// more in this build.
+        pub fn of_file(
+            path: &Path,
+            overrides: &Overrides,
+            _options: &RenderArgs,
+        ) -> Result<Job, Failure> {
+            let scene = raycourse::load_scene(path, overrides)?;
+            Ok(Job { scene })
+        }
+
+        /// The scene of `stage` with `overrides`; `_options` asks for nothing more
+        /// in this build.
+        pub fn of_stage(
+            stage: &Stage,
+            overrides: &Overrides,
+            _options: &RenderArgs,
+        ) -> Result<Job, Failure> {
+            let scene = stage.scene(overrides)?;
+            Ok(Job { scene })
+        }
+
+        /// The scene rendered by the course's code on the current thread pool,
+        /// `progress` told of each row's samples as they are done.
+        pub fn render_reporting(&self, progress: &(dyn Fn(u64) + Sync)) -> Render {
+            raycourse::render_reporting(&self.scene, progress)
+        }
+    }
+}
