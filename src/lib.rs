@@ -49,8 +49,9 @@
 //! | [`inspect`] | one pixel's path ray by ray; images of normals, depth, objects and cost | 1 |
 //!
 //! A program starts with a [`Stage`] (or a scene file, [`load_scene`]), renders its
-//! [`Scene`] with [`render()`] (the course's code, or from session 3 the engine the
-//! scene's settings choose) and writes the [`Film`] with [`encode_png`]:
+//! [`Scene`] with [`render()`] (the course's code) and writes the [`Film`] with
+//! [`encode_png`]. What goes beyond the course reads its own settings with the scene
+//! (`scene_file::beyond`) and renders with them (`engines::render`):
 //!
 //! ```
 //! let stage = raycourse::find_stage(1, "shading").unwrap();
