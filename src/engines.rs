@@ -16,28 +16,60 @@ use crate::check::expected::Renderer;
 use crate::fast::paths::paths_at_once;
 use crate::fast::paths::sphere_lanes::SphereLanes;
 use crate::files::Files;
+use crate::maths::Colour;
 use crate::render::render_rows;
+use crate::render::rows::render_row;
 use crate::samplers;
 use crate::scene::Scene;
 use crate::scene::beyond::{Beyond, Sampler};
 use crate::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
 use crate::scene_file::{Overrides, SceneError};
 
+/// The engine that a scene's settings beyond the course choose, ready to render
+/// its rows one at a time: for [`render_reporting`], and for a page that shows each
+/// row as it comes.
+pub struct Engine<'s> {
+    scene: &'s Scene,
+    beyond: Beyond,
+    /// The scene's spheres for the fast engine's four paths at a time, where it
+    /// follows them.
+    spheres: Option<SphereLanes>,
+}
+
+impl<'s> Engine<'s> {
+    /// The engine that `beyond` chooses for `scene`.
+    pub fn new(scene: &'s Scene, beyond: Beyond) -> Self {
+        let four_at_a_time = beyond.fast && paths_at_once::applies(scene);
+        let spheres = four_at_a_time.then(|| SphereLanes::new(&scene.spheres));
+        Engine {
+            scene,
+            beyond,
+            spheres,
+        }
+    }
+
+    /// Renders row `row` into `line` (each pixel's radiance) and `taken` (the samples
+    /// each took); returns the rays traced and the samples dropped, as the course's
+    /// [`render_row`](crate::render::rows::render_row) does.
+    pub fn row(&self, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (u64, u64) {
+        let (scene, beyond) = (self.scene, &self.beyond);
+        if let Some(spheres) = &self.spheres {
+            return paths_at_once::row(scene, beyond, spheres, row, line, taken);
+        }
+        if beyond.sampler != Sampler::Independent || beyond.noise.is_some() {
+            return samplers::pixel::row(scene, beyond, row, line, taken);
+        }
+        render_row(scene, row, line, taken)
+    }
+}
+
 /// Renders `scene` on the current rayon thread pool with the engine that `beyond`
-/// chooses, calling `progress` as [`render_rows`] does.
+/// chooses ([`Engine`]), calling `progress` as [`render_rows`] does.
 pub fn render_reporting(scene: &Scene, beyond: &Beyond, progress: &(dyn Fn(u64) + Sync)) -> Render {
-    if beyond.fast && paths_at_once::applies(scene) {
-        let spheres = SphereLanes::new(&scene.spheres);
-        return render_rows(scene, progress, |row, line, taken| {
-            paths_at_once::row(scene, beyond, &spheres, row, line, taken)
-        });
-    }
-    if beyond.sampler != Sampler::Independent || beyond.noise.is_some() {
-        return render_rows(scene, progress, |row, line, taken| {
-            samplers::pixel::row(scene, beyond, row, line, taken)
-        });
-    }
-    crate::render::render_reporting(scene, progress)
+    let engine = Engine::new(scene, *beyond);
+    render_rows(scene, progress, |row, line, taken| {
+        engine.row(row, line, taken)
+    })
 }
 
 /// Renders `scene` with the engine that `beyond` chooses: [`render_reporting`] with

@@ -1,23 +1,28 @@
 //! A stage rendered in a page: its scene file, edited by the demo's controls, read as
-//! the command line reads it and rendered row by row with the course's code, so that
-//! a page can show rows as they come and stay responsive between them.
+//! the command line reads it and rendered row by row with the course's code (or,
+//! where the file asks for `render.fast`, the fast engine), so that a page can show
+//! rows as they come and stay responsive between them.
 
 use std::cell::Cell;
 use std::num::NonZeroU32;
 
+use raycourse::engines::Engine;
 use raycourse::inspect::aov::{Aov, see};
 use raycourse::maths::Colour;
 use raycourse::render::film::display;
-use raycourse::render::rows::render_row;
+use raycourse::scene::beyond::Beyond;
+use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
 use raycourse::{Overrides, Scene};
 use wasm_bindgen::prelude::*;
 
 use crate::{assets, edits, functions};
 
-/// A stage's scene ready to render, and the rays traced so far.
+/// A stage's scene ready to render, how (beyond the course), and the rays traced so
+/// far.
 #[wasm_bindgen]
 pub struct Demo {
     scene: Scene,
+    beyond: Beyond,
     rays: Cell<u64>,
 }
 
@@ -35,9 +40,11 @@ impl Demo {
         height: u32,
         samples: u32,
     ) -> Result<Demo, JsError> {
-        let scene = scene(stage, edits, width, height, samples).map_err(|e| JsError::new(&e))?;
+        let (scene, beyond) =
+            scene(stage, edits, width, height, samples).map_err(|e| JsError::new(&e))?;
         Ok(Demo {
             scene,
+            beyond,
             rays: Cell::new(0),
         })
     }
@@ -63,8 +70,9 @@ impl Demo {
     }
 
     /// Rows `first` to `first + count - 1` (those inside the image), rendered by the
-    /// course's `render_row`, as RGBA bytes for a canvas: each channel the 8-bit
-    /// value the PNG would hold (`min(255, L^(1/gamma))`), alpha opaque.
+    /// course's `render_row` (or the engine the file's settings beyond the course
+    /// choose), as RGBA bytes for a canvas: each channel the 8-bit value the PNG
+    /// would hold (`min(255, L^(1/gamma))`), alpha opaque.
     pub fn rows(&self, first: u32, count: u32) -> Vec<u8> {
         let width = self.width() as usize;
         let last = (first + count).min(self.height());
@@ -72,8 +80,9 @@ impl Demo {
         let mut rgba = Vec::with_capacity(width * 4 * (last - first.min(last)) as usize);
         let mut line = vec![Colour::ZERO; width];
         let mut taken = vec![0; width];
+        let engine = Engine::new(&self.scene, self.beyond);
         for row in first..last {
-            let (rays, _) = render_row(&self.scene, row, &mut line, &mut taken);
+            let (rays, _) = engine.row(row, &mut line, &mut taken);
             self.rays.set(self.rays.get() + rays);
             for colour in &line {
                 let [r, g, b] = colour.to_array().map(|v| display(v, gamma));
@@ -101,7 +110,8 @@ impl Demo {
 
     /// The course functions this render runs, as a JSON list of names.
     pub fn functions(&self) -> String {
-        serde_json::to_string(&functions::ran(&self.scene)).expect("names serialise")
+        let names = functions::ran(&self.scene, &self.beyond);
+        serde_json::to_string(&names).expect("names serialise")
     }
 }
 
@@ -131,14 +141,14 @@ impl CostImage {
     }
 }
 
-/// The scene of [`Demo::new`], or what is wrong.
+/// The scene of [`Demo::new`] and its settings beyond the course, or what is wrong.
 pub fn scene(
     stage: &str,
     edits: &str,
     width: u32,
     height: u32,
     samples: u32,
-) -> Result<Scene, String> {
+) -> Result<(Scene, Beyond), String> {
     let stage = crate::find(stage)?;
     let text = edits::apply(stage.source, edits)?;
     let overrides = Overrides {
@@ -147,7 +157,9 @@ pub fn scene(
         samples: NonZeroU32::new(samples),
         ..Overrides::default()
     };
-    raycourse::parse_scene_from(&text, &stage.file(), &overrides, assets::stage_files())
+    let files = assets::stage_files();
+    let nothing_more = BeyondOverrides::default();
+    parse_with_beyond(&text, &stage.file(), &overrides, &nothing_more, files)
         .map_err(|e| e.to_string())
 }
 
@@ -168,13 +180,17 @@ mod tests {
     }
 
     #[test]
-    fn rows_in_bands_make_the_command_lines_image() {
-        for name in ["glass", "indirect", "textures"] {
-            let demo = scene(name, "{}", 24, 24, 0).map(|scene| Demo {
+    fn rows_in_bands_make_the_command_lines_image_with_either_engine() {
+        let fast = r#"{"render.fast": true}"#;
+        let cases = ["glass", "indirect", "textures"].map(|name| (name, "{}"));
+        for (name, edits) in cases.into_iter().chain([("indirect", fast), ("bvh", fast)]) {
+            let demo = scene(name, edits, 24, 24, 0).map(|(scene, beyond)| Demo {
                 scene,
+                beyond,
                 rays: Cell::new(0),
             });
             let demo = demo.unwrap();
+            assert_eq!(demo.beyond.fast, edits == fast, "{name}");
             let bands: Vec<u8> = [0, 7, 14, 21]
                 .iter()
                 .flat_map(|&f| demo.rows(f, 7))
@@ -193,8 +209,10 @@ mod tests {
 
     #[test]
     fn an_edit_changes_the_image_and_a_bad_one_is_named() {
-        let plain = scene("shading", "{}", 16, 16, 0).unwrap();
-        let wide = scene("shading", r#"{"camera.fov": 90}"#, 16, 16, 0).unwrap();
+        let plain = scene("shading", "{}", 16, 16, 0).unwrap().0;
+        let wide = scene("shading", r#"{"camera.fov": 90}"#, 16, 16, 0)
+            .unwrap()
+            .0;
         assert!(wide.camera.fov > plain.camera.fov);
         let error = scene("shading", r#"{"camera.fov": "wide"}"#, 16, 16, 0).unwrap_err();
         assert!(error.contains("camera.fov"), "{error}");

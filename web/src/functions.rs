@@ -3,13 +3,20 @@
 
 use raycourse::Scene;
 use raycourse::camera::{Lens, PixelFilter};
+use raycourse::fast::paths::paths_at_once;
 use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::meshes::MeshAlbedo;
+use raycourse::scene::beyond::Beyond;
 
-/// The course functions that rendering `scene` runs, from the pixel loop to the
-/// light: each listed once, in the order a ray first meets them.
-pub fn ran(scene: &Scene) -> Vec<&'static str> {
+/// The course functions that rendering `scene` with the settings `beyond` runs,
+/// from the pixel loop to the light: each listed once, in the order a ray first
+/// meets them. Where the fast engine follows four paths at a time, none of them
+/// runs: its row function is named instead.
+pub fn ran(scene: &Scene, beyond: &Beyond) -> Vec<&'static str> {
+    if beyond.fast && paths_at_once::applies(scene) {
+        return vec!["paths_at_once::row"];
+    }
     let mut names = vec!["render_row", "pixel"];
     names.extend(camera(scene));
     names.extend(["Tracer::radiance", "Tracer::reflected", "Scene::intersect"]);
@@ -53,6 +60,7 @@ fn meshes(scene: &Scene) -> Vec<&'static str> {
     names.push(match first.search.name() {
         "brute force" => "BruteForce::nearest",
         "bounding box" => "BoundingBox::nearest",
+        "fast" => "FastBvh::nearest",
         _ => "Bvh::nearest",
     });
     names.push(match first.triangle_test {
@@ -131,7 +139,10 @@ mod tests {
     fn listed(name: &str) -> Vec<&'static str> {
         let stage = raycourse::stages().find(|s| s.name == name).unwrap();
         let files = crate::assets::stage_files();
-        ran(&stage.scene_from(&Overrides::default(), files).unwrap())
+        ran(
+            &stage.scene_from(&Overrides::default(), files).unwrap(),
+            &Beyond::default(),
+        )
     }
 
     #[test]
@@ -158,5 +169,17 @@ mod tests {
             unique.dedup();
             assert_eq!(unique.len(), list.len(), "{list:?}");
         }
+    }
+
+    #[test]
+    fn the_fast_engine_names_its_own_row_or_its_hierarchy() {
+        let fast = |name: &str| {
+            let edits = r#"{"render.fast": true}"#;
+            let (scene, beyond) = crate::demo::scene(name, edits, 16, 16, 0).unwrap();
+            ran(&scene, &beyond)
+        };
+        assert_eq!(fast("indirect"), ["paths_at_once::row"]);
+        let glass = fast("glass");
+        assert!(glass.contains(&"refract"), "the course's code: {glass:?}");
     }
 }
