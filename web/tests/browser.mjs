@@ -3,6 +3,7 @@
 //
 //   node web/tests/browser.mjs           the tests
 //   node web/tests/browser.mjs --speed   the demos' times at 256 x 256, for the book
+//                                        (`--speed=3,6`: only those sessions')
 //
 // Each session chapter's demo renders its first stage at a small size; the pixels
 // read back from its canvas must pass `raycourse check` for that stage, and moving a
@@ -60,7 +61,8 @@ async function rendered(page, timeout = 300000) {
     const demo = document.querySelector(".live-demo");
     return { state: demo.dataset.state, status: demo.querySelector(".live-status").textContent,
       png: demo.querySelector("canvas.live-image").toDataURL("image/png"), stage: demo.querySelector("select.live-stage").value,
-      firstMs: Number(demo.dataset.firstMs), totalMs: Number(demo.dataset.totalMs) };
+      firstMs: Number(demo.dataset.firstMs), totalMs: Number(demo.dataset.totalMs),
+      functions: demo.querySelector(".live-functions").textContent };
   });
 }
 
@@ -138,8 +140,32 @@ async function setControl(page, id, value) {
   return rendered(page);
 }
 
-/** What the controls teach, seen through `check`: acne, and the orbit. */
+/** Turns the fast engine of the demo of `page` on or off, and waits for the image. */
+async function setFast(page, on) {
+  await page.evaluate((on) => {
+    const input = document.querySelector('.live-demo [data-control="fast"]');
+    input.checked = on;
+    input.dispatchEvent(new Event("change"));
+  }, on);
+  return rendered(page);
+}
+
+/** What the controls teach, seen through `check`: acne, the orbit, and the fast
+ * engine's image, the course's. */
 async function controls(browser, base) {
+  await test("the fast engine draws the course's very pixels, in sessions 3 to 7", async () => {
+    for (const session of [3, 4, 5, 6, 7]) {
+      const page = await open(browser, `${base}session${session}.html?live-size=24`);
+      const course = await rendered(page);
+      const fast = await setFast(page, true);
+      assert(fast.state === "done", `session ${session}, the fast engine: ${fast.status}`);
+      assert(fast.png === course.png, `session ${session}: the fast engine's image differs`);
+      assert(fast.functions === "paths_at_once::row" && course.functions.includes("pixel"),
+        `session ${session}: the fast engine did not render: ${fast.functions}`);
+      assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
+      await page.close();
+    }
+  });
   await test("session 2's shadow offset at 0 shows the acne that check names", async () => {
     const page = await open(browser, `${base}session2.html?live-size=64`);
     await rendered(page);
@@ -236,12 +262,14 @@ async function checks(browser, base) {
 /** The demos' times at their sizes (256 x 256, but 128 x 128 for session 5): in
  * sessions 1 and 2, a control's change to the image, the median of five; in the
  * Monte Carlo sessions, the first pass at one sample per pixel and all the samples,
- * as the page opens. Printed, not asserted: a timed test would fail on a busy
- * machine. */
+ * as the page opens, then with the fast engine. Printed, not asserted: a timed test
+ * would fail on a busy machine. */
 async function speed(browser, base) {
   console.log(`Chromium ${await browser.version()}, ${os.cpus()[0].model}, ${os.cpus().length} cores`);
-  console.log("session | stage | size | samples | first pass | all samples");
-  for (const session of [1, 2, 3, 4, 5, 6, 7]) {
+  console.log("session | stage | size | samples | first pass | all samples | first pass, fast | all samples, fast");
+  const chosen = process.argv.find((a) => a.startsWith("--speed="));
+  const sessions = chosen ? chosen.slice(8).split(",").map(Number) : [1, 2, 3, 4, 5, 6, 7];
+  for (const session of sessions) {
     const page = await open(browser, `${base}session${session}.html`);
     const times = [await rendered(page)];
     if (session <= 2) {
@@ -253,7 +281,12 @@ async function speed(browser, base) {
     }
     const median = (key) => times.map((t) => t[key]).sort((a, b) => a - b)[Math.floor(times.length / 2)];
     const [, size, samples] = times[0].status.match(/(\d+) × \d+: (\d+)/);
-    console.log(`${session} | ${times[0].stage} | ${size} | ${samples} | ${median("firstMs")} ms | ${median("totalMs")} ms`);
+    let fast = "- | -";
+    if (session >= 3) {
+      const timed = await setFast(page, true);
+      fast = `${timed.firstMs} ms | ${timed.totalMs} ms`;
+    }
+    console.log(`${session} | ${times[0].stage} | ${size} | ${samples} | ${median("firstMs")} ms | ${median("totalMs")} ms | ${fast}`);
     await page.close();
   }
 }
@@ -265,7 +298,7 @@ const browser = await puppeteer.launch({
     "--disable-component-update", "--disable-sync"],
 });
 try {
-  if (process.argv.includes("--speed")) {
+  if (process.argv.some((a) => a.startsWith("--speed"))) {
     await speed(browser, base);
   } else {
     await demos(browser, base);

@@ -41,6 +41,9 @@
     choice("acceleration", "search of the mesh", names, (f) => f.render.acceleration || "none",
       (v) => ({ "render.acceleration": v }));
   const meshes = [["none", "brute force"], ["bbox", "bounding box"], ["bvh", "BVH"]];
+  // Beyond the course: the same image by the fast engine, in less time.
+  const fast = toggle("fast", "the fast engine (beyond the course: the same image)", (f) => !!f.render.fast,
+    (on) => ({ "render.fast": on || null }));
 
   // The controls that each session teaches, and the size its demo renders at.
   const SESSIONS = {
@@ -66,6 +69,7 @@
         (x) => ({ "render.bounces": x })),
       toggle("antialiasing", "antialiasing", (f) => f.camera.antialiasing !== undefined,
         (on) => ({ "camera.antialiasing": on ? 0.5 : null })),
+      fast,
     ] },
     4: { size: 256, controls: [
       samples,
@@ -76,16 +80,19 @@
         (_, v) => ({ "camera.lens": { aperture: v.aperture, focus: v.focus } })),
       range("focus", "focus distance", [20, 90, 1], (f) => f.camera.lens && f.camera.lens.focus,
         (_, v) => ({ "camera.lens": { aperture: v.aperture, focus: v.focus } })),
+      fast,
     ] },
-    5: { size: 128, cost: true, controls: [samples, accelerations(meshes.slice(0, 2))] },
+    5: { size: 128, cost: true, controls: [samples, accelerations(meshes.slice(0, 2)), fast] },
     6: { size: 256, cost: true, controls: [
       samples, accelerations(meshes),
       toggle("smooth", "smooth normals", (f) => !!f.meshes[0].smooth_normals, (on) => ({ "meshes.0.smooth_normals": on })),
+      fast,
     ] },
     7: { size: 256, orbit: true, controls: [
       samples,
       range("plunge", "plunge (degrees); drag the image to orbit", [-10, 80, 1], (f) => f.camera.plunge || 0, () => ({})),
       toggle("texture", "texture", (f) => !!f.meshes[0].textured, (on) => ({ "meshes.0.textured": on })),
+      fast,
     ] },
   };
 
@@ -263,7 +270,9 @@
     /** For the mesh sessions: the time of this search, and its cost image. */
     record(ms, samples) {
       const search = this.values.acceleration;
-      this.times[search] = { ms, samples, size: this.size };
+      const fast = !!this.values.fast;
+      this.timesKey = `${search}${fast ? " fast" : ""}`;
+      this.times[this.timesKey] = { search, fast, ms, samples, size: this.size };
       this.workers[0].postMessage({ kind: "cost", job: this.job, stage: this.stage.name, edits: this.edited,
         width: this.size, height: this.size });
     }
@@ -273,13 +282,14 @@
       const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, message.height);
       this.costCanvas.getContext("2d").putImageData(pixels, 0, 0);
       this.costCaption.textContent = `${say("cost")}${french ? " " : ""}: ${number(message.mean, 1)} ${say("tests per camera ray on average")}`;
-      this.times[this.values.acceleration].cost = message.mean;
+      this.times[this.timesKey].cost = message.mean;
       this.showTimes();
     }
 
     showTimes() {
-      const rows = Object.entries(this.times).map(([search, t]) => element("tr", {},
-        element("td", { textContent: say(meshes.find((m) => m[0] === search)[1]) }),
+      const name = (t) => say(meshes.find((m) => m[0] === t.search)[1]) + (t.fast ? `, ${say("fast engine")}` : "");
+      const rows = Object.values(this.times).map((t) => element("tr", {},
+        element("td", { textContent: name(t) }),
         element("td", { textContent: `${duration(t.ms)} (${t.samples} ${say("samples")}, ${t.size} × ${t.size})` }),
         element("td", { textContent: t.cost === undefined ? "" : `${number(t.cost, 1)} ${say("tests per camera ray")}` })));
       this.timesTable.replaceChildren(element("tr", {}, element("th", { textContent: say("search") }),

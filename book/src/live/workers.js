@@ -58,6 +58,8 @@
     "smooth normals": "normales lissées",
     "plunge (degrees); drag the image to orbit": "plongée (degrés) ; faites glisser l'image pour tourner",
     "texture": "texture",
+    "fast engine": "moteur rapide",
+    "the fast engine (beyond the course: the same image)": "le moteur rapide (au-delà du cours\u00a0: la même image)",
     "loading the renderer…": "chargement du moteur de rendu…",
     "stage": "étape",
     "rendering": "calcul de",
