@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """The course's sphere stages in Mitsuba 3 and in raycourse, at the same size,
 samples and depth: checks that the images agree (region means within a few percent)
-and times both; raycourse renders with its fast engine (`--fast`).
+and times both; raycourse renders with its fast engine (`--fast`), in double
+precision and, with `--single`, also as built with `--features f32`.
 
     python3 benches/mitsuba/compare.py                       # indirect, light-sampling
     python3 benches/mitsuba/compare.py depth-of-field --size 128 --spp 200 --threads 2
+    python3 benches/mitsuba/compare.py --single              # both precisions
 
 Installs what it needs into target/mitsuba-venv (PyPI `mitsuba`, `numpy`). Mitsuba
 renders with `scalar_rgb` (one path at a time, like the course's code) and, where LLVM is
@@ -131,10 +133,23 @@ def render_mitsuba(mi, variant, scene, args):
     return np.array(image), seconds
 
 
-def raycourse_image(stage, args):
+# Where each precision's build of raycourse goes.
+BUILDS = {"double": ROOT / "target", "single": ROOT / "target" / "f32"}
+
+
+def build(precision):
+    """Builds raycourse with `--profile fastest` in `precision`, each into its own
+    target folder so that neither rebuild undoes the other."""
+    features = ["--features", "f32"] if precision == "single" else []
+    environment = {**os.environ, "CARGO_TARGET_DIR": str(BUILDS[precision])}
+    subprocess.run(["cargo", "build", "--quiet", "--profile", "fastest", *features],
+                   cwd=ROOT, env=environment, check=True)
+
+
+def raycourse_image(stage, args, precision):
     import numpy as np
-    binary = ROOT / "target" / "fastest" / "raycourse"
-    out = ROOT / "target" / f"mitsuba-{stage}.png"
+    binary = BUILDS[precision] / "fastest" / "raycourse"
+    out = ROOT / "target" / f"mitsuba-{stage}-{precision}.png"
     command = [str(binary), "render", str(ROOT / "sessions" / STAGES[stage] / f"{stage}.toml"),
                "--width", str(args.size), "--height", str(args.size), "--spp", str(args.spp),
                "--threads", str(args.threads), "--quiet", "--fast", "--out", str(out)]
@@ -144,6 +159,14 @@ def raycourse_image(stage, args):
     import mitsuba as mi
     bitmap = mi.Bitmap(str(out))
     return np.array(bitmap, dtype=np.float64), seconds
+
+
+def agreement(means, mine_means):
+    """The largest relative difference of a region's mean from raycourse's, and that
+    of the whole image's mean."""
+    worst = max(abs(a - b) / max(b, 1.0) for a, b in zip(means, mine_means))
+    overall = abs(sum(means) - sum(mine_means)) / sum(mine_means)
+    return worst, overall
 
 
 def has_llvm():
@@ -167,9 +190,13 @@ def main():
     parser.add_argument("--size", type=int, default=128)
     parser.add_argument("--spp", type=int, default=200)
     parser.add_argument("--threads", type=int, default=os.cpu_count())
+    parser.add_argument("--single", action="store_true",
+                        help="also time raycourse built in single precision (--features f32)")
     args = parser.parse_args()
     in_venv()
-    subprocess.run(["cargo", "build", "--quiet", "--profile", "fastest"], cwd=ROOT, check=True)
+    precisions = ["double", "single"] if args.single else ["double"]
+    for precision in precisions:
+        build(precision)
     import mitsuba as mi
     variants = ["scalar_rgb"] + (["llvm_ad_rgb"] if has_llvm() else [])
     print(f"{args.size} x {args.size}, {args.spp} spp, {args.threads} threads")
@@ -178,14 +205,17 @@ def main():
     for stage in args.stages:
         scene = tomllib.loads((ROOT / "sessions" / STAGES[stage] / f"{stage}.toml").read_text())
         gamma = scene["render"].get("gamma", 1.0)
-        mine, mine_seconds = raycourse_image(stage, args)
+        mine, mine_seconds = raycourse_image(stage, args, "double")
         mine_means = region_means(mine)
         print(f"| {stage} | raycourse | {mine_seconds:.2f} | 1 | - |")
+        for precision in precisions[1:]:
+            image, seconds = raycourse_image(stage, args, precision)
+            worst, overall = agreement(region_means(image), mine_means)
+            print(f"| {stage} | raycourse, {precision} precision | {seconds:.2f} | "
+                  f"{mine_seconds / seconds:.2f}x | {100 * worst:.1f}%, {100 * overall:.1f}% |")
         for variant in variants:
             image, seconds = render_mitsuba(mi, variant, scene, args)
-            means = region_means(display(image, gamma))
-            worst = max(abs(a - b) / max(b, 1.0) for a, b in zip(means, mine_means))
-            overall = abs(sum(means) - sum(mine_means)) / sum(mine_means)
+            worst, overall = agreement(region_means(display(image, gamma)), mine_means)
             print(f"| {stage} | Mitsuba {variant} | {seconds:.2f} | "
                   f"{mine_seconds / seconds:.2f}x | {100 * worst:.1f}%, {100 * overall:.1f}% |")
 
