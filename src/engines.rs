@@ -50,7 +50,7 @@ impl<'s> Engine<'s> {
 
     /// Renders row `row` into `line` (each pixel's radiance) and `taken` (the samples
     /// each took); returns the rays traced and the samples dropped, as the course's
-    /// [`render_row`](crate::render::rows::render_row) does.
+    /// [`render_row`] does.
     pub fn row(&self, row: u32, line: &mut [Colour], taken: &mut [u32]) -> (u64, u64) {
         let (scene, beyond) = (self.scene, &self.beyond);
         if let Some(spheres) = &self.spheres {
