@@ -1,6 +1,6 @@
-//! What a command renders: a scene, with the settings beyond the course that its
-//! file and the options ask for where this build has them (read in
-//! `commands/beyond.rs`; without them, in `course` below).
+//! What a command renders: a scene, at the course's settings but for the options'.
+//! A build that goes beyond the course adds the settings beyond it that the scene
+//! file and the options ask for, read with the scene.
 
 use raycourse::Scene;
 
@@ -13,8 +13,7 @@ pub struct Job {
     pub beyond: raycourse::scene::beyond::Beyond,
 }
 
-/// A job in a build without what goes beyond the course: the scene, rendered by the
-/// course's code.
+/// How a job is read and rendered by the course's code alone.
 #[cfg(not(feature = "beyond"))]
 mod course {
     use std::path::Path;
