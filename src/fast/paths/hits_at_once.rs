@@ -1,5 +1,5 @@
-//! Beyond the course: the work at the hits of the paths followed at once, four at a
-//! time on the lanes ([`RealSource`]): their records on spheres, their direct light
+//! Beyond the course: the work at the hits of the paths followed at once, all at
+//! once on the lanes ([`RealSource`]): their records on spheres, their direct light
 //! (a point light and its shadow rays, or samples of a sphere light), and their
 //! bounces. Each is written once for any lanes in [`shading`], the
 //! course's functions step by step, so that every number is theirs to the last bit.
@@ -16,7 +16,7 @@ use crate::materials::Material;
 use crate::maths::Real;
 use crate::scene::Scene;
 
-/// The records of the hits `nearest` (distance and sphere of `scene`) of four
+/// The records of the hits `nearest` (distance and sphere of `scene`) of the
 /// `rays`, their normals facing the rays, worked out on the lanes, with their
 /// albedos, into `hits`, which stay `None` where a ray meets no sphere (a lane
 /// whose ray meets none repeats another lane's sphere).
@@ -32,8 +32,8 @@ pub(crate) fn sphere_hits<L: RealSource>(
     let Some(&Some(any)) = nearest.iter().find(|n| n.is_some()) else {
         return;
     };
-    let [n0, n1, n2, n3] = nearest.map(|n| n.unwrap_or(any));
-    let (t, object) = ([n0.0, n1.0, n2.0, n3.0], [n0.1, n1.1, n2.1, n3.1]);
+    let found = nearest.map(|n| n.unwrap_or(any));
+    let (t, object) = (found.map(|n| n.0), found.map(|n| n.1));
     let rows = object.map(|object| spheres.sphere(object));
     let found = shading::sphere_hits(lanes, rays, t, rows);
     for (k, hit) in hits.iter_mut().enumerate() {
@@ -58,7 +58,7 @@ pub(crate) fn sphere_hits<L: RealSource>(
     }
 }
 
-/// The direct light at the paths' hits (`hits[k]` for `paths[k]`): for the four
+/// The direct light at the paths' hits (`hits[k]` for `paths[k]`): for all the
 /// hits at once on `lanes` where the light is a point light with shadows or
 /// (session 4) a sampled sphere light, as [`Direct::at`] does it for one;
 /// otherwise by `Direct::at`.
@@ -92,11 +92,10 @@ fn point_light_all<L: RealSource>(
     hits: &[Shaded; PATHS],
     light: &PointLight,
 ) {
-    let Some([h0, h1, h2, h3]) = repeated(hits) else {
+    let Some(shaded) = repeated(hits) else {
         return;
     };
-    let four = [&h0.0, &h1.0, &h2.0, &h3.0];
-    let lit = point_light(lanes, four, [h0.1, h1.1, h2.1, h3.1], light);
+    let lit = point_light(lanes, shaded.map(|s| &s.0), shaded.map(|s| s.1), light);
     for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
         if hit.is_some() {
             path.tracer.rays += 1;
@@ -109,7 +108,7 @@ fn point_light_all<L: RealSource>(
 
 // ANCHOR: bounce_all
 /// Takes the paths on from their hits (`hits[k]` for `paths[k]`): keeps what each
-/// hit adds, and makes the next rays of those that bounce, the four at once on
+/// hit adds, and makes the next rays of those that bounce, all at once on
 /// `lanes`, each from its own path's random numbers.
 #[inline(always)]
 pub(crate) fn bounce_all<L: RealSource>(lanes: L, paths: &mut [Path], hits: &[Shaded; PATHS]) {
@@ -122,15 +121,12 @@ pub(crate) fn bounce_all<L: RealSource>(lanes: L, paths: &mut [Path], hits: &[Sh
             (samples[k], bouncing[k]) = (Some(path.bounce_sample()), Some(hit));
         }
     }
-    let Some([h0, h1, h2, h3]) = repeated(&bouncing) else {
+    let Some(bouncing) = repeated(&bouncing) else {
         return;
     };
     let any = samples.iter().flatten().next().copied().unwrap_or_default();
-    let (origin, direction) = bounces(
-        lanes,
-        [*h0, *h1, *h2, *h3],
-        samples.map(|s| s.unwrap_or(any)),
-    );
+    let samples_or_any = samples.map(|s| s.unwrap_or(any));
+    let (origin, direction) = bounces(lanes, bouncing.map(|h| *h), samples_or_any);
     for (k, path) in paths.iter_mut().enumerate() {
         if samples[k].is_some() {
             path.ray = shading::ray(&origin, &direction, k);

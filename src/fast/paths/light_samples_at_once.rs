@@ -1,5 +1,5 @@
 //! Beyond the course: a sampled sphere light at the hits of the paths followed at
-//! once (session 4), four at a time on the lanes: `Tracer::light_sample` for four
+//! once (session 4), all at once on the lanes: `Tracer::light_sample` for their
 //! hits, each path drawing its own random numbers first, as
 //! [`hits_at_once`](crate::fast::paths::hits_at_once) does for a point light.
 
@@ -31,12 +31,12 @@ pub(crate) fn sphere_light_all<L: RealSource>(
             *sample = [u1, phi.cos(), phi.sin()];
         }
     }
-    let Some([h0, h1, h2, h3]) = repeated(hits) else {
+    let Some(shaded) = repeated(hits) else {
         return;
     };
-    let (four, albedo) = ([&h0.0, &h1.0, &h2.0, &h3.0], [h0.1, h1.1, h2.1, h3.1]);
+    let (at, albedo) = (shaded.map(|s| &s.0), shaded.map(|s| s.1));
     let shape = (light.centre, light.radius, light.emission);
-    let found = sphere_light(lanes, four, albedo, samples, shape);
+    let found = sphere_light(lanes, at, albedo, samples, shape);
     for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
         if hit.is_none() {
             continue;
@@ -52,7 +52,7 @@ pub(crate) fn sphere_light_all<L: RealSource>(
     }
 }
 
-/// `Tracer::light_sample` at four hits (normals facing their rays) of surfaces of
+/// `Tracer::light_sample` at [`PATHS`] hits (normals facing their rays) of surfaces of
 /// `albedo`, from each hit's `[u1, cos phi, sin phi]`, towards the sphere light of
 /// `centre`, `radius` and `emission`, on `lanes`: the cone under which the light is
 /// seen (`SphereLight::cone`), its frame, a direction in it (`Cone::sample`), its
@@ -60,15 +60,14 @@ pub(crate) fn sphere_light_all<L: RealSource>(
 #[inline(always)]
 pub fn sphere_light<L: RealSource>(
     lanes: L,
-    hits: [&Hit; 4],
-    albedo: [Colour; 4],
-    samples: [[Real; 3]; 4],
+    hits: [&Hit; PATHS],
+    albedo: [Colour; PATHS],
+    samples: [[Real; 3]; PATHS],
     light: (Vec3, Real, Colour),
 ) -> LightSamples {
     let (centre, radius, emission) = light;
     let one = lanes.splat(1.0);
-    let [h0, h1, h2, h3] = hits;
-    let point = gather3(lanes, [h0.point, h1.point, h2.point, h3.point]);
+    let point = gather3(lanes, hits.map(|h| h.point));
     let to_centre = minus(splat3(lanes, centre), point);
     let r2 = dot(to_centre, to_centre);
     let sin2 = lanes.splat(radius * radius) / r2;
@@ -91,7 +90,7 @@ pub fn sphere_light<L: RealSource>(
     let direction = to_world(lanes, axis, local);
     let inside_cone = local[2].ge(cos_max);
     let pdf = inside_cone & (one / (lanes.splat(2.0 * PI) * one_minus_cos_max));
-    let normal = gather3(lanes, [h0.normal, h1.normal, h2.normal, h3.normal]);
+    let normal = gather3(lanes, hits.map(|h| h.normal));
     let cos = dot(direction, normal);
     let kept = outside & cos.gt(lanes.splat(0.0));
     let pi = lanes.splat(PI);
@@ -101,7 +100,7 @@ pub fn sphere_light<L: RealSource>(
         ey * ay / pi * cos / pdf,
         ez * az / pi * cos / pdf,
     ];
-    let offset = gather3(lanes, [h0.offset, h1.offset, h2.offset, h3.offset]);
+    let offset = gather3(lanes, hits.map(|h| h.offset));
     LightSamples {
         lit: scatter3(lit),
         origin: spawn(lanes, point, offset, direction),

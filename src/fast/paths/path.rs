@@ -5,6 +5,7 @@
 
 use crate::fast::paths::direct_at_once::Direct;
 use crate::fast::paths::meshes_at_once;
+use crate::fast::simd::real_lanes::LANES;
 use crate::geometry::{Hit, Ray};
 use crate::integrator::Tracer;
 use crate::maths::{Colour, PI, Real, uniform_pair};
@@ -13,9 +14,10 @@ use crate::samplers::pixel::{camera_sample, start_pixel};
 use crate::scene::Scene;
 use crate::scene::beyond::Beyond;
 
-/// How many paths one thread follows at once: one per lane of
-/// a kind of lanes ([`RealSource`](crate::fast::simd::real_lanes::RealSource)).
-pub const PATHS: usize = 4;
+/// How many paths one thread follows at once: one per lane of a kind of lanes
+/// ([`RealSource`](crate::fast::simd::real_lanes::RealSource)), four in double
+/// precision and eight in single.
+pub const PATHS: usize = LANES;
 
 /// A path's hit, facing its ray, and the albedo of the surface hit.
 pub(crate) type Shaded = Option<(Hit, Colour)>;
@@ -223,10 +225,9 @@ impl<'s> Path<'s> {
     }
 }
 
-/// The four entries of `hits`, a lane without one repeating the first that has
-/// one; `None` if none has.
-pub(crate) fn repeated<T>(hits: &[Option<T>; 4]) -> Option<[&T; 4]> {
+/// The entries of `hits`, a lane without one repeating the first that has one;
+/// `None` if none has.
+pub(crate) fn repeated<T>(hits: &[Option<T>; PATHS]) -> Option<[&T; PATHS]> {
     let first = hits.iter().flatten().next()?;
-    let lane = |k: usize| hits[k].as_ref().unwrap_or(first);
-    Some([lane(0), lane(1), lane(2), lane(3)])
+    Some(std::array::from_fn(|k| hits[k].as_ref().unwrap_or(first)))
 }

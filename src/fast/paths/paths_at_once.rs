@@ -1,5 +1,5 @@
-//! Beyond the course: the pixels of a row rendered four paths at a time, to the
-//! same bytes as [`pixel`](crate::render::samples::pixel).
+//! Beyond the course: the pixels of a row rendered four paths at a time (eight in
+//! single precision), to the same bytes as [`pixel`](crate::render::samples::pixel).
 //!
 //! Following one path is a chain of steps that each wait for the one before: the
 //! nearest sphere needs the ray, the bounce needs the hit, the next ray needs the
@@ -7,7 +7,7 @@
 //! they are followed side by side, one hit each per step, on the four lanes of a
 //! SIMD register: the nearest-sphere test of their four rays, then of their four
 //! shadow rays, runs as one test on four rays at once
-//! ([`SphereLanes::nearest_of_four`]), each sphere's steps done for the four rays by
+//! ([`SphereLanes::nearest_of_each`]), each sphere's steps done for the four rays by
 //! one instruction each, and so does the work at their four hits
 //! ([`hits_at_once`](crate::fast::paths::hits_at_once)).
 //!
@@ -22,7 +22,7 @@
 //! `fast/meshes_at_once.rs`), a point or sphere light, bounce limit and Russian
 //! roulette; any other scene takes the course's recursion.
 //!
-//! [`SphereLanes::nearest_of_four`]: crate::fast::paths::sphere_lanes::SphereLanes::nearest_of_four
+//! [`SphereLanes::nearest_of_each`]: crate::fast::paths::sphere_lanes::SphereLanes::nearest_of_each
 
 use crate::fast::lanes::{LaneKind, OnLanes};
 use crate::fast::paths::hits_at_once::{bounce_all, light_all, sphere_hits};
@@ -44,7 +44,7 @@ pub fn applies(scene: &Scene) -> bool {
 
 /// Renders row `row` of `scene`, whose spheres are `spheres`, with the settings
 /// `beyond`, into `line` (each pixel's radiance) and `taken` (its number of
-/// samples), `PATHS` (four) pixels at a time, the next pixel starting where one is
+/// samples), `PATHS` (four, or eight in single precision) pixels at a time, the next pixel starting where one is
 /// done; returns the rays traced and the samples dropped as not finite, as
 /// [`Tracer`](crate::integrator::Tracer) counts them. The row runs on the lanes
 /// that `spheres` chose, the fastest the processor has.
@@ -124,8 +124,8 @@ fn row_on<L: RealSource>(lanes: L, work: Row) -> (u64, u64) {
 }
 
 // ANCHOR: step
-/// Takes each of `paths` (one to four) one hit further: their rays' nearest hits in
-/// one test, then their shadow rays' in another. Where fewer than four paths are
+/// Takes each of `paths` (one to [`PATHS`]) one hit further: their rays' nearest hits
+/// in one test, then their shadow rays' in another. Where fewer than `PATHS` are
 /// left, or a path has no shadow ray, a lane repeats another ray and its answer is
 /// not used. The work at the hits (their records, their direct light, their
 /// bounces) is done on the lanes too, each part for every path before the next.
@@ -133,8 +133,8 @@ fn row_on<L: RealSource>(lanes: L, work: Row) -> (u64, u64) {
 fn step<L: RealSource>(lanes: L, spheres: &SphereLanes, paths: &mut [Path]) {
     let last = paths.len() - 1;
     let ray = |k: usize| &paths[k.min(last)].ray;
-    let rays = [ray(0), ray(1), ray(2), ray(3)];
-    let nearest = spheres.nearest_of_four(lanes, rays);
+    let rays = std::array::from_fn(ray);
+    let nearest = spheres.nearest_of_each(lanes, rays);
     let mut hits = [None; PATHS];
     sphere_hits(
         lanes,
@@ -155,7 +155,7 @@ fn step<L: RealSource>(lanes: L, spheres: &SphereLanes, paths: &mut [Path]) {
             let path = &paths[k.min(last)];
             path.shadow_ray().unwrap_or(&path.ray)
         };
-        shadow = spheres.nearest_of_four(lanes, [ray(0), ray(1), ray(2), ray(3)]);
+        shadow = spheres.nearest_of_each(lanes, std::array::from_fn(ray));
     }
     for (path, shadow) in paths.iter_mut().zip(shadow) {
         path.light(shadow);

@@ -1,4 +1,4 @@
-//! The work at four paths' hits, written once for any kind of lanes ([`RealSource`]):
+//! The work at the hits of the paths followed at once, written once for any kind of lanes ([`RealSource`]):
 //! their hit records on spheres, their direct light from a point light with its
 //! shadow rays, and their cosine-weighted bounces (a sample of a sphere light is in
 //! [`light_samples_at_once`](crate::fast::paths::light_samples_at_once)).
@@ -27,46 +27,46 @@
 //! [`one_ulp_towards`]: crate::geometry::spawn::one_ulp_towards
 
 use crate::fast::simd::real_lanes::{
-    RealLanes, RealSource, VectorLanes, abs3, column, divide, dot, gather3, minus, plus, scale,
-    scatter3, splat3,
+    LANES, RealLanes, RealSource, VectorLanes, abs3, column, divide, dot, gather3, minus, plus,
+    scale, scatter3, splat3,
 };
 use crate::geometry::spawn::one_ulp_towards;
 use crate::geometry::{Hit, Ray};
 use crate::lights::PointLight;
 use crate::maths::{Colour, PI, Real, Vec3, error_bound};
 
-/// Four vectors by coordinate: `v[axis][k]` is coordinate `axis` of vector `k`.
-pub type FourVectors = [[Real; 4]; 3];
+/// [`LANES`] vectors by coordinate: `v[axis][k]` is coordinate `axis` of vector `k`.
+pub type LaneVectors = [[Real; LANES]; 3];
 
 /// Vector `k` of `v`.
 #[inline(always)]
-pub fn vector(v: &FourVectors, k: usize) -> Vec3 {
+pub fn vector(v: &LaneVectors, k: usize) -> Vec3 {
     Vec3::new(v[0][k], v[1][k], v[2][k])
 }
 
-/// Ray `k` of four whose origins are `origin` and directions `direction`.
+/// Ray `k` of those whose origins are `origin` and directions `direction`.
 #[inline(always)]
-pub fn ray(origin: &FourVectors, direction: &FourVectors, k: usize) -> Ray {
+pub fn ray(origin: &LaneVectors, direction: &LaneVectors, k: usize) -> Ray {
     Ray {
         origin: vector(origin, k),
         direction: vector(direction, k),
     }
 }
 
-/// What [`Sphere::hit_at`](crate::geometry::Sphere::hit_at) finds for four rays,
+/// What [`Sphere::hit_at`](crate::geometry::Sphere::hit_at) finds for [`LANES`] rays,
 /// their normals already facing the rays.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SphereHits {
     /// The hit points, projected onto their spheres.
-    pub point: FourVectors,
+    pub point: LaneVectors,
     /// The unit normals, facing the rays.
-    pub normal: FourVectors,
+    pub normal: LaneVectors,
     /// The bounds on the points' rounding errors, per coordinate.
-    pub error: FourVectors,
+    pub error: LaneVectors,
     /// The offsets that clear the errors, along the outward normals.
-    pub offset: FourVectors,
+    pub offset: LaneVectors,
     /// Per ray, not zero where it started outside its sphere.
-    pub outside: [Real; 4],
+    pub outside: [Real; LANES],
 }
 
 /// The direct light at four hits from a point light: what
@@ -75,13 +75,13 @@ pub struct SphereHits {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PointLit {
     /// The light that arrives if nothing is in the way.
-    pub lit: FourVectors,
+    pub lit: LaneVectors,
     /// The shadow rays' origins.
-    pub origin: FourVectors,
+    pub origin: LaneVectors,
     /// The shadow rays' directions.
-    pub direction: FourVectors,
+    pub direction: LaneVectors,
     /// The distances from the origins to the light.
-    pub distance: [Real; 4],
+    pub distance: [Real; LANES],
 }
 
 /// One direction sampled towards a sphere light from each of four hits: what
@@ -89,14 +89,14 @@ pub struct PointLit {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightSamples {
     /// The light each direction brings if nothing is in the way.
-    pub lit: FourVectors,
+    pub lit: LaneVectors,
     /// The rays' origins.
-    pub origin: FourVectors,
+    pub origin: LaneVectors,
     /// The rays' directions.
-    pub direction: FourVectors,
+    pub direction: LaneVectors,
     /// Per hit, not zero where it has a ray: outside the light, the direction above
     /// the surface.
-    pub kept: [Real; 4],
+    pub kept: [Real; LANES],
 }
 
 // ANCHOR: to_world
@@ -105,9 +105,9 @@ pub struct LightSamples {
 #[inline(always)]
 pub fn to_world<L: RealSource>(
     lanes: L,
-    n: VectorLanes<L::Four>,
-    local: VectorLanes<L::Four>,
-) -> VectorLanes<L::Four> {
+    n: VectorLanes<L::Wide>,
+    local: VectorLanes<L::Wide>,
+) -> VectorLanes<L::Wide> {
     let [nx, ny, nz] = n;
     let one = lanes.splat(1.0);
     let sign = (nz & lanes.splat(-0.0)) | one;
@@ -123,23 +123,23 @@ pub fn to_world<L: RealSource>(
 /// The lanes where `one_ulp_towards(p, o)` takes its usual case: `p` finite and
 /// not zero, `o` not zero (a NaN `o` makes `p` NaN, so such a lane is never usual).
 #[inline(always)]
-fn usual<L: RealSource>(lanes: L, p: L::Four, o: L::Four) -> L::Four {
+fn usual<L: RealSource>(lanes: L, p: L::Wide, o: L::Wide) -> L::Wide {
     let zero = lanes.splat(0.0);
     let finite = p.abs().lt(lanes.splat(Real::INFINITY));
     p.ne(zero) & finite & o.ne(zero)
 }
 
-/// The origins of rays leaving four hits (`point`, `offset`) along `direction`:
+/// The origins of rays leaving [`LANES`] hits (`point`, `offset`) along `direction`:
 /// `Hit::spawn` on the lanes, the last float of each coordinate too where every
 /// lane takes `one_ulp_towards`'s usual case (nearly always), one number at a time
 /// otherwise.
 #[inline(always)]
 pub fn spawn<L: RealSource>(
     lanes: L,
-    point: VectorLanes<L::Four>,
-    offset: VectorLanes<L::Four>,
-    direction: VectorLanes<L::Four>,
-) -> FourVectors {
+    point: VectorLanes<L::Wide>,
+    offset: VectorLanes<L::Wide>,
+    direction: VectorLanes<L::Wide>,
+) -> LaneVectors {
     let away = dot(direction, offset).lt(lanes.splat(0.0));
     let [x, y, z] = offset;
     let offset = [away.select(-x, x), away.select(-y, y), away.select(-z, z)];
@@ -162,22 +162,18 @@ pub fn spawn<L: RealSource>(
     origin
 }
 
-/// `Sphere::hit_at` then `Hit::facing_the_ray` for four rays, ray `k` meeting
+/// `Sphere::hit_at` then `Hit::facing_the_ray` for [`LANES`] rays, ray `k` meeting
 /// sphere `spheres[k]` (centre and radius first) at `t[k]`, on `lanes`.
 #[inline(always)]
 pub fn sphere_hits<L: RealSource>(
     lanes: L,
-    rays: [&Ray; 4],
-    t: [Real; 4],
-    spheres: [&[Real; 5]; 4],
+    rays: [&Ray; LANES],
+    t: [Real; LANES],
+    spheres: [&[Real; 5]; LANES],
 ) -> SphereHits {
-    let [r0, r1, r2, r3] = rays;
-    let origin = gather3(lanes, [r0.origin, r1.origin, r2.origin, r3.origin]);
-    let direction = gather3(
-        lanes,
-        [r0.direction, r1.direction, r2.direction, r3.direction],
-    );
-    let rows = [*spheres[0], *spheres[1], *spheres[2], *spheres[3]];
+    let origin = gather3(lanes, rays.map(|r| r.origin));
+    let direction = gather3(lanes, rays.map(|r| r.direction));
+    let rows = spheres.map(|s| *s);
     let centre = [
         column(lanes, rows, 0),
         column(lanes, rows, 1),
@@ -204,18 +200,17 @@ pub fn sphere_hits<L: RealSource>(
     }
 }
 
-/// `PointLight::lambert` and `Hit::spawn_towards` (towards the light) at four hits
+/// `PointLight::lambert` and `Hit::spawn_towards` (towards the light) at [`LANES`] hits
 /// (normals facing their rays) of surfaces of `albedo`, on `lanes`.
 #[inline(always)]
 pub fn point_light<L: RealSource>(
     lanes: L,
-    hits: [&Hit; 4],
-    albedo: [Colour; 4],
+    hits: [&Hit; LANES],
+    albedo: [Colour; LANES],
     light: &PointLight,
 ) -> PointLit {
-    let [h0, h1, h2, h3] = hits;
-    let point = gather3(lanes, [h0.point, h1.point, h2.point, h3.point]);
-    let normal = gather3(lanes, [h0.normal, h1.normal, h2.normal, h3.normal]);
+    let point = gather3(lanes, hits.map(|h| h.point));
+    let normal = gather3(lanes, hits.map(|h| h.normal));
     let position = splat3(lanes, light.position);
     let to_light = minus(position, point);
     let d2 = dot(to_light, to_light);
@@ -226,7 +221,7 @@ pub fn point_light<L: RealSource>(
     let [ax, ay, az] = gather3(lanes, albedo);
     let lit = [power * ax / pi, power * ay / pi, power * az / pi];
     let direction = scale(lanes.splat(1.0) / length, to_light);
-    let offset = gather3(lanes, [h0.offset, h1.offset, h2.offset, h3.offset]);
+    let offset = gather3(lanes, hits.map(|h| h.offset));
     let origin = spawn(lanes, point, offset, direction);
     let [ox, oy, oz] = origin;
     let to_target = minus(
@@ -241,26 +236,25 @@ pub fn point_light<L: RealSource>(
     }
 }
 
-/// The cosine-weighted bounces of four hits (normals facing their rays), on
+/// The cosine-weighted bounces of [`LANES`] hits (normals facing their rays), on
 /// `lanes`: `sample_cosine_hemisphere` from each sample's `[cos phi, sin phi, u2]`,
 /// turned into the frame of the normal and spawned from the hit; the rays' origins
 /// and directions.
 #[inline(always)]
 pub fn bounces<L: RealSource>(
     lanes: L,
-    hits: [&Hit; 4],
-    samples: [[Real; 3]; 4],
-) -> (FourVectors, FourVectors) {
+    hits: [&Hit; LANES],
+    samples: [[Real; 3]; LANES],
+) -> (LaneVectors, LaneVectors) {
     let cos_phi = column(lanes, samples, 0);
     let sin_phi = column(lanes, samples, 1);
     let u2 = column(lanes, samples, 2);
     let r = (lanes.splat(1.0) - u2).sqrt();
     let local = [cos_phi * r, sin_phi * r, u2.sqrt()];
-    let [h0, h1, h2, h3] = hits;
-    let normal = gather3(lanes, [h0.normal, h1.normal, h2.normal, h3.normal]);
+    let normal = gather3(lanes, hits.map(|h| h.normal));
     let direction = to_world(lanes, normal, local);
-    let point = gather3(lanes, [h0.point, h1.point, h2.point, h3.point]);
-    let offset = gather3(lanes, [h0.offset, h1.offset, h2.offset, h3.offset]);
+    let point = gather3(lanes, hits.map(|h| h.point));
+    let offset = gather3(lanes, hits.map(|h| h.offset));
     (spawn(lanes, point, offset, direction), scatter3(direction))
 }
 
@@ -315,16 +309,16 @@ mod tests {
         v.to_array().map(Real::to_bits)
     }
 
-    /// Four rays and their nearest spheres' distances and indices.
-    type Four = ([Ray; 4], [(Real, usize); 4]);
+    /// One ray per lane and their nearest spheres' distances and indices.
+    type Batch = ([Ray; LANES], [(Real, usize); LANES]);
 
-    /// 4,000 rays between random points of the room, in fours, with their nearest
-    /// spheres (every ray meets a wall).
-    fn fours(scene: &Scene) -> Vec<Four> {
+    /// 1,000 batches of rays between random points of the room, one ray per lane,
+    /// with their nearest spheres (every ray meets a wall).
+    fn batches(scene: &Scene) -> Vec<Batch> {
         let mut rng = pixel_rng(12, 0);
         (0..1000)
             .map(|_| {
-                let rays: [Ray; 4] = std::array::from_fn(|_| {
+                let rays: [Ray; LANES] = std::array::from_fn(|_| {
                     let origin = point(&mut rng);
                     let direction = (point(&mut rng) - origin).normalize();
                     Ray { origin, direction }
@@ -335,8 +329,12 @@ mod tests {
             .collect()
     }
 
-    /// The course's hit records of four rays, facing the rays.
-    fn course_hits(scene: &Scene, rays: &[Ray; 4], nearest: [(Real, usize); 4]) -> [Hit; 4] {
+    /// The course's hit records of a batch of rays, facing the rays.
+    fn course_hits(
+        scene: &Scene,
+        rays: &[Ray; LANES],
+        nearest: [(Real, usize); LANES],
+    ) -> [Hit; LANES] {
         std::array::from_fn(|k| {
             let (t, object) = nearest[k];
             scene.spheres[object]
@@ -355,11 +353,11 @@ mod tests {
             intensity: 2e10,
         };
         let mut rng = pixel_rng(13, 0);
-        for (rays, nearest) in fours(&scene) {
+        for (rays, nearest) in batches(&scene) {
             let expected = course_hits(&scene, &rays, nearest);
             let found = sphere_hits(
                 lanes,
-                [&rays[0], &rays[1], &rays[2], &rays[3]],
+                std::array::from_fn(|k| &rays[k]),
                 nearest.map(|n| n.0),
                 nearest.map(|n| rows.sphere(n.1)),
             );
@@ -370,10 +368,10 @@ mod tests {
                 assert_eq!(bits(vector(&found.offset, k)), bits(hit.offset));
                 assert_eq!(found.outside[k].to_bits() != 0, hit.from_outside);
             }
-            let hits = [&expected[0], &expected[1], &expected[2], &expected[3]];
+            let hits = std::array::from_fn(|k| &expected[k]);
             let albedo = std::array::from_fn(|_| Vec3::new(uniform(&mut rng), 0.5, 1.0));
             let lit = point_light(lanes, hits, albedo, &light);
-            let samples: [[Real; 2]; 4] =
+            let samples: [[Real; 2]; LANES] =
                 std::array::from_fn(|_| [uniform(&mut rng), uniform(&mut rng)]);
             let phi = samples.map(|[u1, _]| 2.0 * PI * u1);
             let with_angles = std::array::from_fn(|k| [phi[k].cos(), phi[k].sin(), samples[k][1]]);
@@ -411,13 +409,16 @@ mod tests {
     /// at a time.
     fn spawn_as_the_course_in_the_rare_cases(lanes: impl RealSource) {
         let scene = scene();
-        let (rays, nearest) = fours(&scene)[0];
+        let (rays, nearest) = batches(&scene)[0];
         let mut hits = course_hits(&scene, &rays, nearest);
         hits[1].point.x = 0.0;
         hits[2].offset.y = 0.0;
         hits[3].offset.z = Real::NAN;
-        let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
-        let (origin, direction) = bounces(lanes, four, [[0.6, 0.8, 0.3]; 4]);
+        let (origin, direction) = bounces(
+            lanes,
+            std::array::from_fn(|k| &hits[k]),
+            [[0.6, 0.8, 0.3]; LANES],
+        );
         for (k, hit) in hits.iter().enumerate() {
             let course = hit.spawn(vector(&direction, k)).origin;
             assert_eq!(bits(vector(&origin, k)), bits(course));
@@ -450,10 +451,10 @@ mod tests {
             let light = SphereLight::new(Vec3::new(20.0, -5.0, 3.0), 35.0, 2e10, 0);
             let mut tracer = Tracer::new(&scene);
             let (mut kept, mut rays, mut inside) = (0, 0, 0);
-            for (rays_of_four, nearest) in fours(&scene) {
-                let hits = course_hits(&scene, &rays_of_four, nearest);
-                let albedo = [Vec3::new(1.0, 0.5, 0.25); 4];
-                let mut samples = [[0.0; 3]; 4];
+            for (batch, nearest) in batches(&scene) {
+                let hits = course_hits(&scene, &batch, nearest);
+                let albedo = [Vec3::new(1.0, 0.5, 0.25); LANES];
+                let mut samples = [[0.0; 3]; LANES];
                 let mut expected = Vec::new();
                 for (hit, sample) in hits.iter().zip(&mut samples) {
                     let (u1, u2) = uniform_pair(&mut tracer.rng.clone());
@@ -463,8 +464,8 @@ mod tests {
                     inside += usize::from(light.cone(hit.point).is_none());
                 }
                 let shape = (light.centre, light.radius, light.emission);
-                let four = [&hits[0], &hits[1], &hits[2], &hits[3]];
-                let found = sphere_light(lanes, four, albedo, samples, shape);
+                let at = std::array::from_fn(|k| &hits[k]);
+                let found = sphere_light(lanes, at, albedo, samples, shape);
                 for (k, expected) in expected.iter().enumerate() {
                     let ray = (found.kept[k].to_bits() != 0).then(|| {
                         let (origin, direction) =
@@ -476,7 +477,7 @@ mod tests {
                     assert_eq!(ray, expected);
                     kept += usize::from(ray.is_some());
                 }
-                rays += 4;
+                rays += LANES;
             }
             // Many directions lie below their surfaces, and some points are inside the
             // light: lanes with and without a ray are tested.

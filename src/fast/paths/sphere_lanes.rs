@@ -1,14 +1,15 @@
-//! A scene's spheres ready for the four-ray test, and the nearest sphere of each of
-//! four rays: what [`Scene::nearest_sphere`](crate::scene::Scene::nearest_sphere)
-//! finds for one ray, for four paths followed at once.
+//! A scene's spheres ready for the test of several rays at once, and the nearest
+//! sphere of each: what [`Scene::nearest_sphere`](crate::scene::Scene::nearest_sphere)
+//! finds for one ray, for the paths followed at once (four, or eight in single
+//! precision).
 //!
 //! The test is [`Sphere::intersect`](crate::geometry::Sphere::intersect)'s, step
-//! by step in the same order, on four lanes of a SIMD register (one ray per lane),
+//! by step in the same order, on the lanes of a SIMD register (one ray per lane),
 //! so every distance is the same number to the last bit. It is written once for
 //! any kind of lanes ([`RealSource`]), with the usual operators.
 
 use crate::fast::lanes::Lanes;
-use crate::fast::simd::real_lanes::{RealLanes, RealSource, VectorLanes, gather3};
+use crate::fast::simd::real_lanes::{LANES, RealLanes, RealSource, VectorLanes, gather3};
 use crate::geometry::{Ray, Sphere};
 use crate::maths::Real;
 
@@ -44,23 +45,19 @@ impl SphereLanes {
         &self.spheres[index]
     }
 
-    /// For each of four `rays`, the distance to the nearest sphere it hits and that
-    /// sphere's index, the first sphere on a tie: the course's loop for four rays at
-    /// once, on `lanes`, to the last bit. Each sphere is tested against the four
-    /// rays at once (`meet`); a strict `<` keeps the first sphere on a tie, as the
-    /// course's loop does.
+    /// For each of the `rays` (one per lane), the distance to the nearest sphere
+    /// it hits and that sphere's index, the first sphere on a tie: the course's loop
+    /// for all the rays at once, on `lanes`, to the last bit. Each sphere is tested
+    /// against the rays at once (`meet`); a strict `<` keeps the first sphere on a
+    /// tie, as the course's loop does.
     #[inline(always)]
-    pub fn nearest_of_four<L: RealSource>(
+    pub fn nearest_of_each<L: RealSource>(
         &self,
         lanes: L,
-        rays: [&Ray; 4],
-    ) -> [Option<(Real, usize)>; 4] {
-        let [r0, r1, r2, r3] = rays;
-        let origin = gather3(lanes, [r0.origin, r1.origin, r2.origin, r3.origin]);
-        let direction = gather3(
-            lanes,
-            [r0.direction, r1.direction, r2.direction, r3.direction],
-        );
+        rays: [&Ray; LANES],
+    ) -> [Option<(Real, usize)>; LANES] {
+        let origin = gather3(lanes, rays.map(|r| r.origin));
+        let direction = gather3(lanes, rays.map(|r| r.direction));
         let mut nearest = lanes.splat(Real::INFINITY);
         let mut which = lanes.splat(0.0);
         for &[x, y, z, radius, index] in &self.spheres {
@@ -71,12 +68,7 @@ impl SphereLanes {
             which = closer.select(lanes.splat(index), which);
         }
         let (t, which) = (nearest.to_array(), which.to_array());
-        [
-            found(t[0], which[0]),
-            found(t[1], which[1]),
-            found(t[2], which[2]),
-            found(t[3], which[3]),
-        ]
+        std::array::from_fn(|k| found(t[k], which[k]))
     }
 }
 
@@ -89,11 +81,11 @@ impl SphereLanes {
 #[inline(always)]
 fn meet<L: RealSource>(
     lanes: L,
-    origin: VectorLanes<L::Four>,
-    direction: VectorLanes<L::Four>,
-    centre: VectorLanes<L::Four>,
-    radius: L::Four,
-) -> L::Four {
+    origin: VectorLanes<L::Wide>,
+    direction: VectorLanes<L::Wide>,
+    centre: VectorLanes<L::Wide>,
+    radius: L::Wide,
+) -> L::Wide {
     let [dx, dy, dz] = direction;
     let zero = lanes.splat(0.0);
     // s = O - C, s.d, and c = |s|^2 - R^2.
@@ -201,10 +193,10 @@ mod tests {
         let rows = SphereLanes::new(&spheres);
         let rays = rays();
         let mut hits = 0;
-        for four in rays.chunks(4) {
-            let ray = |k: usize| &four[k.min(four.len() - 1)];
-            let found = rows.nearest_of_four(lanes, [ray(0), ray(1), ray(2), ray(3)]);
-            for (ray, found) in four.iter().zip(found) {
+        for chunk in rays.chunks(LANES) {
+            let ray = |k: usize| &chunk[k.min(chunk.len() - 1)];
+            let found = rows.nearest_of_each(lanes, std::array::from_fn(ray));
+            for (ray, found) in chunk.iter().zip(found) {
                 let expected = scene.nearest_sphere(ray);
                 hits += usize::from(expected.is_some());
                 assert_eq!(found, expected, "{ray:?}");
@@ -232,7 +224,7 @@ mod tests {
             origin: Vec3::new(3.0, 2.0, 9.0),
             direction: -Vec3::Z,
         };
-        let found = SphereLanes::new(&spheres()).nearest_of_four(Portable, [&ray; 4]);
+        let found = SphereLanes::new(&spheres()).nearest_of_each(Portable, [&ray; LANES]);
         assert!(found.iter().all(|n| n.map(|n| n.1) == Some(4)), "{found:?}");
     }
 }

@@ -3,7 +3,8 @@
 //! ([`Avx::detect`]), so the build needs no flag.
 //!
 //! The lanes' operations use AVX instructions, which code compiled without AVX may
-//! call only where the processor has them. So the AVX lanes (`Four`, [`Eight`])
+//! call only where the processor has them. So the AVX lanes (`Four` or
+//! `EightReals` for the paths, [`Eight`] for the hierarchy)
 //! are made only from an [`Avx`], the proof that it has, and the work on them runs
 //! in a function compiled with AVX
 //! ([`Lanes::run`](crate::fast::lanes::Lanes::run)).
@@ -13,12 +14,6 @@ use std::arch::x86_64::{_mm256_loadu_ps, _mm256_set1_ps, _mm256_storeu_ps};
 
 use crate::fast::simd::avx_eight::Eight;
 use crate::fast::simd::float_lanes::LaneSource;
-#[cfg(feature = "f32")]
-use crate::fast::simd::portable::{Portable, PortableFour};
-#[cfg(feature = "f32")]
-use crate::fast::simd::real_lanes::RealSource;
-#[cfg(feature = "f32")]
-use crate::maths::Real;
 
 /// Proof that this processor has AVX: made only by [`Avx::detect`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -60,22 +55,5 @@ impl LaneSource for Avx {
     #[inline(always)]
     fn first(self) -> usize {
         0
-    }
-}
-
-/// In single precision, the four paths' lanes are the portable ones (SSE's four
-/// `f32`, on x86-64); in double precision they are AVX's four `f64` (`avx_four`).
-#[cfg(feature = "f32")]
-impl RealSource for Avx {
-    type Four = PortableFour;
-
-    #[inline(always)]
-    fn splat(self, x: Real) -> PortableFour {
-        Portable.splat(x)
-    }
-
-    #[inline(always)]
-    fn gather(self, values: [Real; 4]) -> PortableFour {
-        Portable.gather(values)
     }
 }

@@ -20,7 +20,7 @@ use crate::fast::simd::real_lanes::{RealLanes, RealSource};
 pub struct Four(__m256d);
 
 impl RealSource for Avx {
-    type Four = Four;
+    type Wide = Four;
 
     #[inline(always)]
     fn splat(self, x: f64) -> Four {

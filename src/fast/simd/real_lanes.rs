@@ -1,13 +1,18 @@
-//! Four [`Real`] numbers side by side in a SIMD register, as one type: the
-//! operations the four paths followed at once need, so that their sphere test and
-//! their shading are written once, with the usual operators, for the portable lanes
-//! (the `wide` crate's) and for AVX's.
+//! [`Real`] numbers side by side in a 256-bit SIMD register, as one type: four
+//! `f64`, or with the `f32` feature eight `f32`. The operations the paths followed at
+//! once need, so that their sphere test and their shading are written once, with the
+//! usual operators, for the portable lanes (the `wide` crate's) and for AVX's, in
+//! either precision.
 
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Sub};
 
 use crate::maths::{Real, Vec3};
 
-/// A SIMD register of four [`Real`] lanes, with arithmetic lane by lane. A
+/// How many [`Real`] numbers a kind of lanes holds: a 256-bit register's worth, four
+/// `f64` or eight `f32`.
+pub const LANES: usize = 32 / std::mem::size_of::<Real>();
+
+/// A SIMD register of [`LANES`] [`Real`] lanes, with arithmetic lane by lane. A
 /// comparison gives a mask of the same type: all ones in a lane where it holds,
 /// zeros where it does not, which `&`, `|` and [`RealLanes::select`] combine.
 pub trait RealLanes:
@@ -57,42 +62,42 @@ pub trait RealLanes:
     /// [`one_ulp_towards`](crate::geometry::spawn::one_ulp_towards).
     fn step_towards(self, towards: Self) -> Self;
 
-    /// The four numbers, lane 0 first.
-    fn to_array(self) -> [Real; 4];
+    /// The numbers, lane 0 first.
+    fn to_array(self) -> [Real; LANES];
 }
 
-/// Where four lanes come from: a kind of lanes ([`Portable`](super::portable::Portable)
+/// Where lanes come from: a kind of lanes ([`Portable`](super::portable::Portable)
 /// or, proving the processor has it, [`Avx`](super::avx::Avx)) makes them from
 /// numbers.
 pub trait RealSource: Copy {
     /// The lanes it makes.
-    type Four: RealLanes;
+    type Wide: RealLanes;
 
     /// `x` in every lane.
-    fn splat(self, x: Real) -> Self::Four;
+    fn splat(self, x: Real) -> Self::Wide;
 
-    /// The four numbers of `values`, one per lane.
-    fn gather(self, values: [Real; 4]) -> Self::Four;
+    /// The numbers of `values`, one per lane.
+    fn gather(self, values: [Real; LANES]) -> Self::Wide;
 }
 
-/// Four vectors by coordinate, each coordinate in lanes: lane `k` of `v[axis]` is
+/// [`LANES`] vectors by coordinate, each coordinate in lanes: lane `k` of `v[axis]` is
 /// coordinate `axis` of vector `k`.
 pub type VectorLanes<F> = [F; 3];
 
-/// The coordinates of four vectors, one vector per lane.
+/// The coordinates of [`LANES`] vectors, one vector per lane.
 #[inline(always)]
-pub fn gather3<L: RealSource>(lanes: L, v: [Vec3; 4]) -> VectorLanes<L::Four> {
+pub fn gather3<L: RealSource>(lanes: L, v: [Vec3; LANES]) -> VectorLanes<L::Wide> {
     [
-        lanes.gather([v[0].x, v[1].x, v[2].x, v[3].x]),
-        lanes.gather([v[0].y, v[1].y, v[2].y, v[3].y]),
-        lanes.gather([v[0].z, v[1].z, v[2].z, v[3].z]),
+        lanes.gather(v.map(|v| v.x)),
+        lanes.gather(v.map(|v| v.y)),
+        lanes.gather(v.map(|v| v.z)),
     ]
 }
 
 /// The numbers of three coordinates' lanes: `[axis][k]` is coordinate `axis` of
 /// vector `k`.
 #[inline(always)]
-pub fn scatter3<F: RealLanes>(v: VectorLanes<F>) -> [[Real; 4]; 3] {
+pub fn scatter3<F: RealLanes>(v: VectorLanes<F>) -> [[Real; LANES]; 3] {
     [v[0].to_array(), v[1].to_array(), v[2].to_array()]
 }
 
@@ -128,7 +133,7 @@ pub fn abs3<F: RealLanes>(v: VectorLanes<F>) -> VectorLanes<F> {
 
 /// `v` in every lane.
 #[inline(always)]
-pub fn splat3<L: RealSource>(lanes: L, v: Vec3) -> VectorLanes<L::Four> {
+pub fn splat3<L: RealSource>(lanes: L, v: Vec3) -> VectorLanes<L::Wide> {
     [lanes.splat(v.x), lanes.splat(v.y), lanes.splat(v.z)]
 }
 
@@ -138,8 +143,12 @@ pub fn divide<F: RealLanes>(v: VectorLanes<F>, s: F) -> VectorLanes<F> {
     [v[0] / s, v[1] / s, v[2] / s]
 }
 
-/// Entry `i` of each of four rows, one row per lane.
+/// Entry `i` of each of [`LANES`] rows, one row per lane.
 #[inline(always)]
-pub fn column<L: RealSource, const N: usize>(lanes: L, rows: [[Real; N]; 4], i: usize) -> L::Four {
-    lanes.gather([rows[0][i], rows[1][i], rows[2][i], rows[3][i]])
+pub fn column<L: RealSource, const N: usize>(
+    lanes: L,
+    rows: [[Real; N]; LANES],
+    i: usize,
+) -> L::Wide {
+    lanes.gather(rows.map(|row| row[i]))
 }

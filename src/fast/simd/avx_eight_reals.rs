@@ -1,0 +1,171 @@
+//! Eight `f32` in one AVX register as [`RealLanes`]: the lanes of the eight paths
+//! followed at once on the processors that have AVX, in single precision (the `f32`
+//! feature; in double precision they are `avx_four`'s four `f64`).
+#![allow(unsafe_code)]
+
+use std::arch::x86_64::{
+    __m128, __m256, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_add_epi32,
+    _mm_castps_si128, _mm_castsi128_ps, _mm_set1_epi32, _mm_slli_epi32, _mm_srli_epi32,
+    _mm_sub_epi32, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps, _mm256_blendv_ps,
+    _mm256_castps128_ps256, _mm256_castps256_ps128, _mm256_cmp_ps, _mm256_div_ps,
+    _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_loadu_ps, _mm256_max_ps,
+    _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps, _mm256_sqrt_ps,
+    _mm256_storeu_ps, _mm256_sub_ps, _mm256_xor_ps,
+};
+use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Sub};
+
+use crate::fast::simd::avx::Avx;
+use crate::fast::simd::real_lanes::{RealLanes, RealSource};
+
+/// Eight `f32` lanes of an AVX register, for the paths followed at once; made only
+/// from an [`Avx`].
+#[derive(Clone, Copy)]
+pub struct EightReals(__m256);
+
+impl RealSource for Avx {
+    type Wide = EightReals;
+
+    #[inline(always)]
+    fn splat(self, x: f32) -> EightReals {
+        // SAFETY: an `Avx` is made only where the processor has AVX.
+        EightReals(unsafe { _mm256_set1_ps(x) })
+    }
+
+    #[inline(always)]
+    fn gather(self, values: [f32; 8]) -> EightReals {
+        // SAFETY: an `Avx` is made only where the processor has AVX, and `values`
+        // holds eight `f32`.
+        EightReals(unsafe { _mm256_loadu_ps(values.as_ptr()) })
+    }
+}
+
+/// An arithmetic operator of [`EightReals`], lane by lane, by one AVX instruction.
+macro_rules! eight_reals_operator {
+    ($trait:ident, $method:ident, $instruction:ident) => {
+        impl $trait for EightReals {
+            type Output = EightReals;
+            #[inline(always)]
+            fn $method(self, other: EightReals) -> EightReals {
+                // SAFETY: an `EightReals` exists only where the processor has AVX.
+                EightReals(unsafe { $instruction(self.0, other.0) })
+            }
+        }
+    };
+}
+
+eight_reals_operator!(Add, add, _mm256_add_ps);
+eight_reals_operator!(Sub, sub, _mm256_sub_ps);
+eight_reals_operator!(Mul, mul, _mm256_mul_ps);
+eight_reals_operator!(Div, div, _mm256_div_ps);
+eight_reals_operator!(BitAnd, bitand, _mm256_and_ps);
+eight_reals_operator!(BitOr, bitor, _mm256_or_ps);
+
+impl Neg for EightReals {
+    type Output = EightReals;
+    #[inline(always)]
+    fn neg(self) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_xor_ps(self.0, _mm256_set1_ps(-0.0)) })
+    }
+}
+
+impl RealLanes for EightReals {
+    #[inline(always)]
+    fn sqrt(self) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_sqrt_ps(self.0) })
+    }
+
+    #[inline(always)]
+    fn abs(self) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_andnot_ps(_mm256_set1_ps(-0.0), self.0) })
+    }
+
+    #[inline(always)]
+    fn max(self, other: EightReals) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_max_ps(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn and_not(self, other: EightReals) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_andnot_ps(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn lt(self, other: EightReals) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_cmp_ps::<_CMP_LT_OQ>(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn gt(self, other: EightReals) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_cmp_ps::<_CMP_GT_OQ>(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn ge(self, other: EightReals) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_cmp_ps::<_CMP_GE_OQ>(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn ne(self, other: EightReals) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_cmp_ps::<_CMP_NEQ_OQ>(self.0, other.0) })
+    }
+
+    #[inline(always)]
+    fn select(self, yes: EightReals, no: EightReals) -> EightReals {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        EightReals(unsafe { _mm256_blendv_ps(no.0, yes.0, self.0) })
+    }
+
+    #[inline(always)]
+    fn all(self) -> bool {
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        unsafe { _mm256_movemask_ps(self.0) == 0xff }
+    }
+
+    #[inline(always)]
+    fn step_towards(self, towards: EightReals) -> EightReals {
+        // AVX has no 256-bit integer arithmetic (AVX2 has): each half of four by SSE2.
+        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        unsafe {
+            let differ = _mm256_xor_ps(self.0, towards.0);
+            let low = step_half(
+                _mm256_castps256_ps128(self.0),
+                _mm256_castps256_ps128(differ),
+            );
+            let high = step_half(
+                _mm256_extractf128_ps::<1>(self.0),
+                _mm256_extractf128_ps::<1>(differ),
+            );
+            EightReals(_mm256_insertf128_ps::<1>(_mm256_castps128_ps256(low), high))
+        }
+    }
+
+    #[inline(always)]
+    fn to_array(self) -> [f32; 8] {
+        let mut values = [0.0; 8];
+        // SAFETY: an `EightReals` exists only where the processor has AVX, and
+        // `values` holds eight `f32`.
+        unsafe { _mm256_storeu_ps(values.as_mut_ptr(), self.0) };
+        values
+    }
+}
+
+/// [`RealLanes::step_towards`] on four of the lanes: their bits plus one, minus two
+/// where `differ`'s sign bit is set (the signs of the two numbers differ).
+#[inline(always)]
+fn step_half(p: __m128, differ: __m128) -> __m128 {
+    // SAFETY: SSE2, which every x86-64 processor has.
+    unsafe {
+        let signs = _mm_srli_epi32::<31>(_mm_castps_si128(differ));
+        let delta = _mm_sub_epi32(_mm_set1_epi32(1), _mm_slli_epi32::<1>(signs));
+        _mm_castsi128_ps(_mm_add_epi32(_mm_castps_si128(p), delta))
+    }
+}
