@@ -206,3 +206,57 @@ fn meshes_cast_the_same_shadows_under_a_point_light() {
         assert!(render.rays > 2 * 24 * 20 * 2, "{name}: shadow rays traced");
     }
 }
+
+/// In single precision the fast engine follows eight paths at once, and its images
+/// are single precision's, not double's bytes: they must still match the
+/// double-precision references of the exercises (`tests/exercises/references/`, 32 x
+/// 32, many more samples) by `check`'s statistical test, block by block against
+/// the noise; and a wrong image (the light a quarter dimmer) must not.
+#[cfg(feature = "f32")]
+#[test]
+fn single_precision_images_match_the_double_precision_references() {
+    use raycourse::check::compare::{Linear, compare_blocks};
+    for name in ["indirect", "light-sampling", "depth-of-field"] {
+        let Some(stage) = stages().find(|s| s.name == name) else {
+            continue;
+        };
+        let overrides = Overrides {
+            width: NonZeroU32::new(32),
+            height: NonZeroU32::new(32),
+            ..Overrides::default()
+        };
+        let fast = BeyondOverrides {
+            fast: true,
+            ..BeyondOverrides::default()
+        };
+        let (scene, beyond) = stage_with_beyond(stage, &overrides, &fast).unwrap();
+        assert!(
+            paths_at_once::applies(&scene),
+            "{name}: eight paths at once"
+        );
+        let gamma = scene.settings.gamma;
+        let film = render(&scene, &beyond).film;
+        let reference = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join(format!("tests/exercises/references/{name}.png"));
+        let reference = image::open(&reference).unwrap().into_rgb16();
+        let values = reference.as_raw().iter();
+        let reference = Linear {
+            width: reference.width(),
+            height: reference.height(),
+            values: values
+                .map(|&v| (f64::from(v) / 256.0).powf(f64::from(gamma)))
+                .collect(),
+        };
+        let linear = Linear::from_film(&film, gamma);
+        let outcome = compare_blocks(&linear, &reference, gamma);
+        assert!(!outcome.image_differs, "{name}: {:?}", outcome.differs);
+        let dimmer = Linear {
+            values: linear.values.iter().map(|v| v * 0.75).collect(),
+            ..linear
+        };
+        assert!(
+            compare_blocks(&dimmer, &reference, gamma).image_differs,
+            "{name}"
+        );
+    }
+}
