@@ -3,8 +3,8 @@
 //! ([`Avx::detect`]), so the build needs no flag.
 //!
 //! The lanes' operations use AVX instructions, which code compiled without AVX may
-//! call only where the processor has them. So the AVX lanes (`Four` or
-//! `EightReals` for the paths, [`Eight`] for the hierarchy)
+//! call only where the processor has them. So the AVX lanes (`Four` for the
+//! paths in double precision, [`Eight`] for the hierarchy and the paths in single)
 //! are made only from an [`Avx`], the proof that it has, and the work on them runs
 //! in a function compiled with AVX
 //! ([`Lanes::run`](crate::fast::lanes::Lanes::run)).

@@ -1,13 +1,15 @@
 //! Eight `f32` in one AVX register: the lanes of the fast hierarchy's tests (a
-//! node's eight boxes, a group's eight triangles) on the processors that have AVX.
+//! node's eight boxes, a group's eight triangles) on the processors that have AVX,
+//! and in single precision those of the paths followed at once too
+//! (`avx_eight_reals`).
 #![allow(unsafe_code)]
 
 use std::arch::x86_64::{
     __m256, _CMP_GT_OQ, _CMP_LE_OQ, _CMP_LT_OQ, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps,
-    _mm256_cmp_ps, _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps,
-    _mm256_set1_ps, _mm256_sub_ps, _mm256_xor_ps,
+    _mm256_cmp_ps, _mm256_div_ps, _mm256_max_ps, _mm256_min_ps, _mm256_movemask_ps, _mm256_mul_ps,
+    _mm256_or_ps, _mm256_set1_ps, _mm256_sub_ps, _mm256_xor_ps,
 };
-use std::ops::{Add, BitAnd, BitOr, Mul, Neg, Sub};
+use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Sub};
 
 use crate::fast::simd::float_lanes::FloatLanes;
 
@@ -32,6 +34,7 @@ macro_rules! eight_operator {
 eight_operator!(Add, add, _mm256_add_ps);
 eight_operator!(Sub, sub, _mm256_sub_ps);
 eight_operator!(Mul, mul, _mm256_mul_ps);
+eight_operator!(Div, div, _mm256_div_ps);
 eight_operator!(BitAnd, bitand, _mm256_and_ps);
 eight_operator!(BitOr, bitor, _mm256_or_ps);
 

@@ -1,139 +1,103 @@
-//! Eight `f32` in one AVX register as [`RealLanes`]: the lanes of the eight paths
-//! followed at once on the processors that have AVX, in single precision (the `f32`
-//! feature; in double precision they are `avx_four`'s four `f64`).
+//! AVX's eight `f32` ([`Eight`], the hierarchy's lanes) as [`RealLanes`] too: the
+//! lanes of the eight paths followed at once on the processors that have AVX, in
+//! single precision (the `f32` feature; in double precision they are `avx_four`'s
+//! four `f64`).
 #![allow(unsafe_code)]
 
 use std::arch::x86_64::{
-    __m128, __m256, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_add_epi32,
-    _mm_castps_si128, _mm_castsi128_ps, _mm_set1_epi32, _mm_slli_epi32, _mm_srli_epi32,
-    _mm_sub_epi32, _mm256_add_ps, _mm256_and_ps, _mm256_andnot_ps, _mm256_blendv_ps,
-    _mm256_castps128_ps256, _mm256_castps256_ps128, _mm256_cmp_ps, _mm256_div_ps,
-    _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_loadu_ps, _mm256_max_ps,
-    _mm256_movemask_ps, _mm256_mul_ps, _mm256_or_ps, _mm256_set1_ps, _mm256_sqrt_ps,
-    _mm256_storeu_ps, _mm256_sub_ps, _mm256_xor_ps,
+    __m128, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_add_epi32, _mm_castps_si128,
+    _mm_castsi128_ps, _mm_set1_epi32, _mm_slli_epi32, _mm_srli_epi32, _mm_sub_epi32,
+    _mm256_andnot_ps, _mm256_blendv_ps, _mm256_castps128_ps256, _mm256_castps256_ps128,
+    _mm256_cmp_ps, _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_loadu_ps, _mm256_max_ps,
+    _mm256_movemask_ps, _mm256_set1_ps, _mm256_sqrt_ps, _mm256_storeu_ps, _mm256_xor_ps,
 };
-use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Sub};
 
 use crate::fast::simd::avx::Avx;
+use crate::fast::simd::avx_eight::Eight;
 use crate::fast::simd::real_lanes::{RealLanes, RealSource};
 
-/// Eight `f32` lanes of an AVX register, for the paths followed at once; made only
-/// from an [`Avx`].
-#[derive(Clone, Copy)]
-pub struct EightReals(__m256);
-
 impl RealSource for Avx {
-    type Wide = EightReals;
+    type Wide = Eight;
 
     #[inline(always)]
-    fn splat(self, x: f32) -> EightReals {
+    fn splat(self, x: f32) -> Eight {
         // SAFETY: an `Avx` is made only where the processor has AVX.
-        EightReals(unsafe { _mm256_set1_ps(x) })
+        Eight(unsafe { _mm256_set1_ps(x) })
     }
 
     #[inline(always)]
-    fn gather(self, values: [f32; 8]) -> EightReals {
+    fn gather(self, values: [f32; 8]) -> Eight {
         // SAFETY: an `Avx` is made only where the processor has AVX, and `values`
         // holds eight `f32`.
-        EightReals(unsafe { _mm256_loadu_ps(values.as_ptr()) })
+        Eight(unsafe { _mm256_loadu_ps(values.as_ptr()) })
     }
 }
 
-/// An arithmetic operator of [`EightReals`], lane by lane, by one AVX instruction.
-macro_rules! eight_reals_operator {
-    ($trait:ident, $method:ident, $instruction:ident) => {
-        impl $trait for EightReals {
-            type Output = EightReals;
-            #[inline(always)]
-            fn $method(self, other: EightReals) -> EightReals {
-                // SAFETY: an `EightReals` exists only where the processor has AVX.
-                EightReals(unsafe { $instruction(self.0, other.0) })
-            }
-        }
-    };
-}
-
-eight_reals_operator!(Add, add, _mm256_add_ps);
-eight_reals_operator!(Sub, sub, _mm256_sub_ps);
-eight_reals_operator!(Mul, mul, _mm256_mul_ps);
-eight_reals_operator!(Div, div, _mm256_div_ps);
-eight_reals_operator!(BitAnd, bitand, _mm256_and_ps);
-eight_reals_operator!(BitOr, bitor, _mm256_or_ps);
-
-impl Neg for EightReals {
-    type Output = EightReals;
+impl RealLanes for Eight {
     #[inline(always)]
-    fn neg(self) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_xor_ps(self.0, _mm256_set1_ps(-0.0)) })
-    }
-}
-
-impl RealLanes for EightReals {
-    #[inline(always)]
-    fn sqrt(self) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_sqrt_ps(self.0) })
+    fn sqrt(self) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_sqrt_ps(self.0) })
     }
 
     #[inline(always)]
-    fn abs(self) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_andnot_ps(_mm256_set1_ps(-0.0), self.0) })
+    fn abs(self) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_andnot_ps(_mm256_set1_ps(-0.0), self.0) })
     }
 
     #[inline(always)]
-    fn max(self, other: EightReals) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_max_ps(self.0, other.0) })
+    fn max(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_max_ps(self.0, other.0) })
     }
 
     #[inline(always)]
-    fn and_not(self, other: EightReals) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_andnot_ps(self.0, other.0) })
+    fn and_not(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_andnot_ps(self.0, other.0) })
     }
 
     #[inline(always)]
-    fn lt(self, other: EightReals) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_cmp_ps::<_CMP_LT_OQ>(self.0, other.0) })
+    fn lt(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_cmp_ps::<_CMP_LT_OQ>(self.0, other.0) })
     }
 
     #[inline(always)]
-    fn gt(self, other: EightReals) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_cmp_ps::<_CMP_GT_OQ>(self.0, other.0) })
+    fn gt(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_cmp_ps::<_CMP_GT_OQ>(self.0, other.0) })
     }
 
     #[inline(always)]
-    fn ge(self, other: EightReals) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_cmp_ps::<_CMP_GE_OQ>(self.0, other.0) })
+    fn ge(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_cmp_ps::<_CMP_GE_OQ>(self.0, other.0) })
     }
 
     #[inline(always)]
-    fn ne(self, other: EightReals) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_cmp_ps::<_CMP_NEQ_OQ>(self.0, other.0) })
+    fn ne(self, other: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_cmp_ps::<_CMP_NEQ_OQ>(self.0, other.0) })
     }
 
     #[inline(always)]
-    fn select(self, yes: EightReals, no: EightReals) -> EightReals {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
-        EightReals(unsafe { _mm256_blendv_ps(no.0, yes.0, self.0) })
+    fn select(self, yes: Eight, no: Eight) -> Eight {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        Eight(unsafe { _mm256_blendv_ps(no.0, yes.0, self.0) })
     }
 
     #[inline(always)]
     fn all(self) -> bool {
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        // SAFETY: an `Eight` exists only where the processor has AVX.
         unsafe { _mm256_movemask_ps(self.0) == 0xff }
     }
 
     #[inline(always)]
-    fn step_towards(self, towards: EightReals) -> EightReals {
+    fn step_towards(self, towards: Eight) -> Eight {
         // AVX has no 256-bit integer arithmetic (AVX2 has): each half of four by SSE2.
-        // SAFETY: an `EightReals` exists only where the processor has AVX.
+        // SAFETY: an `Eight` exists only where the processor has AVX.
         unsafe {
             let differ = _mm256_xor_ps(self.0, towards.0);
             let low = step_half(
@@ -144,14 +108,14 @@ impl RealLanes for EightReals {
                 _mm256_extractf128_ps::<1>(self.0),
                 _mm256_extractf128_ps::<1>(differ),
             );
-            EightReals(_mm256_insertf128_ps::<1>(_mm256_castps128_ps256(low), high))
+            Eight(_mm256_insertf128_ps::<1>(_mm256_castps128_ps256(low), high))
         }
     }
 
     #[inline(always)]
     fn to_array(self) -> [f32; 8] {
         let mut values = [0.0; 8];
-        // SAFETY: an `EightReals` exists only where the processor has AVX, and
+        // SAFETY: an `Eight` exists only where the processor has AVX, and
         // `values` holds eight `f32`.
         unsafe { _mm256_storeu_ps(values.as_mut_ptr(), self.0) };
         values

@@ -14,7 +14,7 @@
 //! | `avx` | the proof that the processor has AVX, from which alone AVX's lanes are made |
 //! | `avx_four` | four `f64` in one AVX register, for the paths in double precision |
 //! | `avx_eight` | eight `f32` in one AVX register, for the hierarchy |
-//! | `avx_eight_reals` | eight `f32` in one AVX register, for the paths in single precision |
+//! | `avx_eight_reals` | the same eight `f32` as `Real` lanes, for the paths in single precision |
 
 #[cfg(target_arch = "x86_64")]
 pub mod avx;
