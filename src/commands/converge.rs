@@ -213,10 +213,7 @@ fn scene_source(name: &str) -> Result<(String, PathBuf), Failure> {
             "`{name}` is neither a stage of this build (see `raycourse list`) nor a .toml scene file"
         )));
     }
-    let source = std::fs::read_to_string(&path).map_err(|source| raycourse::SceneError::Read {
-        path: path.clone(),
-        source,
-    })?;
+    let source = raycourse::scene_file::load::read_source(&path)?;
     Ok((source, path))
 }
 

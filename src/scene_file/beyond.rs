@@ -19,7 +19,7 @@ use crate::maths::values::Positive;
 use crate::scene::Scene;
 use crate::scene::beyond::{Beyond, Sampler};
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
-use crate::scene_file::load::{checked, parse_table, read_table};
+use crate::scene_file::load::{checked, parse_table, read_source, read_table};
 use crate::scene_file::sessions::check_materials;
 use crate::scene_file::{Overrides, SceneError, Stage, session7};
 
@@ -88,11 +88,7 @@ pub fn load_with_beyond(
     overrides: &Overrides,
     beyond: &BeyondOverrides,
 ) -> Result<(Scene, Beyond), SceneError> {
-    let source = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
-        path: path.to_owned(),
-        source,
-    })?;
-    parse_with_beyond(&source, path, overrides, beyond, &Disk)
+    parse_with_beyond(&read_source(path)?, path, overrides, beyond, &Disk)
 }
 
 /// The scene of `stage` at the course's settings but for `overrides` and `beyond`,

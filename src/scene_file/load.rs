@@ -68,11 +68,15 @@ impl Overrides {
 /// Reads and checks the scene file at `path`, with `overrides` applied; the files it
 /// names are read from disk.
 pub fn load_scene(path: &Path, overrides: &Overrides) -> Result<Scene, SceneError> {
-    let source = std::fs::read_to_string(path).map_err(|source| SceneError::Read {
+    parse_scene(&read_source(path)?, path, overrides)
+}
+
+/// The text of the scene file at `path`; an error names the file.
+pub fn read_source(path: &Path) -> Result<String, SceneError> {
+    std::fs::read_to_string(path).map_err(|source| SceneError::Read {
         path: path.to_owned(),
         source,
-    })?;
-    parse_scene(&source, path, overrides)
+    })
 }
 
 /// Parses and checks scene-file text, with `overrides` applied; `path` names it in

@@ -5,15 +5,16 @@
 #![allow(unsafe_code)]
 
 use std::arch::x86_64::{
-    __m128, _CMP_GE_OQ, _CMP_GT_OQ, _CMP_LT_OQ, _CMP_NEQ_OQ, _mm_add_epi32, _mm_castps_si128,
-    _mm_castsi128_ps, _mm_set1_epi32, _mm_slli_epi32, _mm_srli_epi32, _mm_sub_epi32,
-    _mm256_andnot_ps, _mm256_blendv_ps, _mm256_castps128_ps256, _mm256_castps256_ps128,
-    _mm256_cmp_ps, _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_loadu_ps, _mm256_max_ps,
-    _mm256_movemask_ps, _mm256_set1_ps, _mm256_sqrt_ps, _mm256_storeu_ps, _mm256_xor_ps,
+    __m128, _CMP_GE_OQ, _CMP_NEQ_OQ, _mm_add_epi32, _mm_castps_si128, _mm_castsi128_ps,
+    _mm_set1_epi32, _mm_slli_epi32, _mm_srli_epi32, _mm_sub_epi32, _mm256_andnot_ps,
+    _mm256_blendv_ps, _mm256_castps128_ps256, _mm256_castps256_ps128, _mm256_cmp_ps,
+    _mm256_extractf128_ps, _mm256_insertf128_ps, _mm256_loadu_ps, _mm256_movemask_ps,
+    _mm256_set1_ps, _mm256_sqrt_ps, _mm256_storeu_ps, _mm256_xor_ps,
 };
 
 use crate::fast::simd::avx::Avx;
 use crate::fast::simd::avx_eight::Eight;
+use crate::fast::simd::float_lanes::FloatLanes;
 use crate::fast::simd::real_lanes::{RealLanes, RealSource};
 
 impl RealSource for Avx {
@@ -33,6 +34,7 @@ impl RealSource for Avx {
     }
 }
 
+/// The operations the hierarchy's lanes already have ([`FloatLanes`]) are theirs.
 impl RealLanes for Eight {
     #[inline(always)]
     fn sqrt(self) -> Eight {
@@ -42,14 +44,12 @@ impl RealLanes for Eight {
 
     #[inline(always)]
     fn abs(self) -> Eight {
-        // SAFETY: an `Eight` exists only where the processor has AVX.
-        Eight(unsafe { _mm256_andnot_ps(_mm256_set1_ps(-0.0), self.0) })
+        FloatLanes::abs(self)
     }
 
     #[inline(always)]
     fn max(self, other: Eight) -> Eight {
-        // SAFETY: an `Eight` exists only where the processor has AVX.
-        Eight(unsafe { _mm256_max_ps(self.0, other.0) })
+        FloatLanes::max(self, other)
     }
 
     #[inline(always)]
@@ -60,14 +60,12 @@ impl RealLanes for Eight {
 
     #[inline(always)]
     fn lt(self, other: Eight) -> Eight {
-        // SAFETY: an `Eight` exists only where the processor has AVX.
-        Eight(unsafe { _mm256_cmp_ps::<_CMP_LT_OQ>(self.0, other.0) })
+        FloatLanes::lt(self, other)
     }
 
     #[inline(always)]
     fn gt(self, other: Eight) -> Eight {
-        // SAFETY: an `Eight` exists only where the processor has AVX.
-        Eight(unsafe { _mm256_cmp_ps::<_CMP_GT_OQ>(self.0, other.0) })
+        FloatLanes::gt(self, other)
     }
 
     #[inline(always)]
