@@ -21,16 +21,24 @@ converge bvh --compare leaf --max-spp 64 --reference-spp 8192 --out "$out/leaf"
 converge textures --compare filter --max-spp 64 --reference-spp 8192 --out "$out/filter"
 rm -f "$out/leaf.png" "$out/filter.png"
 
-# Precision and engine: the same study from both builds, with the course's code and
-# with the fast engine (four paths at once in double precision, eight in single),
-# against the same (cached) reference.
+# Precision, engine and renderer: the same study from both builds, with the course's
+# code and with the fast engine (four paths at once in double precision, eight in
+# single), and Mitsuba 3's two variants (benches/mitsuba/converge.py, which installs
+# Mitsuba into target/mitsuba-venv), against the same (cached) reference. The stage
+# is `antialiasing`, whose Gaussian jitter of camera rays Mitsuba shares.
 single() { cargo run --release --quiet --features f32 -- converge "$@" "${small[@]}"; }
-converge indirect --label double --max-spp 256 --reference-spp 8192 --out "$out/double"
-converge indirect --label double-fast --fast --max-spp 256 --reference-spp 8192 \
+printed=$(converge antialiasing --label double --max-spp 256 --reference-spp 8192 \
+  --out "$out/double")
+echo "$printed"
+reference=$(grep -o 'out/reference/[0-9a-f]*\.ref' <<< "$printed")
+converge antialiasing --label double-fast --fast --max-spp 256 --reference-spp 8192 \
   --out "$out/double-fast"
-single indirect --label single --max-spp 256 --reference-spp 8192 --out "$out/single"
-single indirect --label single-fast --fast --max-spp 256 --reference-spp 8192 \
+single antialiasing --label single --max-spp 256 --reference-spp 8192 --out "$out/single"
+single antialiasing --label single-fast --fast --max-spp 256 --reference-spp 8192 \
   --out "$out/single-fast"
-cargo run --release --quiet -- plot "$out"/{double,double-fast,single,single-fast}.csv \
-  --out "$out/precision.png" --title "indirect: double against single precision, both engines"
+python3 benches/mitsuba/converge.py antialiasing --reference "$reference" --size 64 \
+  --max-spp 256 --out "$out/mitsuba.csv"
+cargo run --release --quiet -- plot "$out"/{double,double-fast,single,single-fast,mitsuba}.csv \
+  --out "$out/precision.png" \
+  --title "antialiasing: both precisions, both engines, and Mitsuba 3"
 rm -f "$out"/{double,double-fast,single,single-fast}.png

@@ -10,7 +10,7 @@ use indicatif::ProgressBar;
 use raycourse::engines::render_reporting;
 use raycourse::maths::Real;
 use raycourse::render::Film;
-use raycourse::render::cache::cached_render;
+use raycourse::render::cache::{cached_render, reference_file};
 use raycourse::scene::beyond::Beyond;
 use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
 use raycourse::studies::convergence::{Rung, climb, fitted_slope, sample_ladder};
@@ -191,11 +191,12 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         .clone()
         .unwrap_or_else(|| Path::new("out/converge").join(&args.scene));
     println!(
-        "{}: {}x{}, reference {} spp, {} threads -> {}",
+        "{}: {}x{}, reference {} spp ({}), {} threads -> {}",
         args.scene,
         truth.0.camera.width,
         truth.0.camera.height,
         args.reference_spp,
+        reference_file(&args.cache, &text, truth.0).display(),
         pool.current_num_threads(),
         out.with_extension("csv").display()
     );

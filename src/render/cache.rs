@@ -61,6 +61,18 @@ pub fn save_reference(path: &Path, film: &Film) -> std::io::Result<()> {
     write_atomically(path, &bytes)
 }
 
+/// Where the reference of `scene` is kept in `dir`: `text` is the scene file's
+/// text, edits included, and with the size, the samples and the seed it names the
+/// file ([`reference_path`]).
+pub fn reference_file(dir: &Path, text: &str, scene: &Scene) -> PathBuf {
+    let (camera, settings) = (scene.camera, scene.settings);
+    let key = format!(
+        "{text}\n{}x{}, {} spp, seed {}",
+        camera.width, camera.height, settings.samples, settings.seed
+    );
+    reference_path(dir, &key)
+}
+
 /// The film of `scene` from the folder of references `dir`, if it was rendered
 /// before, else rendered by `render` (which tells `progress` its work as it goes)
 /// and kept there. `text` is the scene file's text, edits included: with the
@@ -75,14 +87,9 @@ pub fn cached_render(
     progress: &(dyn Fn(u64) + Sync),
     render: impl FnOnce(&(dyn Fn(u64) + Sync)) -> Film,
 ) -> (Film, std::io::Result<()>) {
-    let (camera, settings) = (scene.camera, scene.settings);
-    let key = format!(
-        "{text}\n{}x{}, {} spp, seed {}",
-        camera.width, camera.height, settings.samples, settings.seed
-    );
-    let path = reference_path(dir, &key);
+    let path = reference_file(dir, text, scene);
     if let Some(film) = load_reference(&path) {
-        progress(u64::from(camera.height) * u64::from(settings.samples));
+        progress(u64::from(scene.camera.height) * u64::from(scene.settings.samples));
         return (film, Ok(()));
     }
     let film = render(progress);

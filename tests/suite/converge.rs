@@ -9,12 +9,19 @@ use raycourse::maths::Real;
 use raycourse::studies::convergence::fitted_slope;
 use raycourse::studies::convergence::{Rung, read_rungs};
 
-/// Runs a study in `dir` and returns its rows.
+/// Runs a study in `dir` and returns its rows, after checking that the reference
+/// file it names on its first line is there.
 fn study(dir: &Path, args: &[&str]) -> Vec<Rung> {
     let mut all = vec!["converge", "-q", "--fast", "--out", "study"];
     all.extend(args);
     let out = run(&all, dir);
     assert!(out.status.success(), "{}", text(&out.stderr));
+    let printed = text(&out.stdout);
+    let reference = printed.split(['(', ')']).nth(1).unwrap_or_default();
+    assert!(
+        reference.ends_with(".ref") && dir.join(reference).is_file(),
+        "{printed}"
+    );
     read_rungs(&std::fs::read_to_string(dir.join("study.csv")).unwrap()).unwrap()
 }
 
