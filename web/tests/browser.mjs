@@ -62,7 +62,9 @@ async function rendered(page, timeout = 300000) {
     return { state: demo.dataset.state, status: demo.querySelector(".live-status").textContent,
       png: demo.querySelector("canvas.live-image").toDataURL("image/png"), stage: demo.querySelector("select.live-stage").value,
       firstMs: Number(demo.dataset.firstMs), totalMs: Number(demo.dataset.totalMs),
-      functions: demo.querySelector(".live-functions").textContent };
+      functions: demo.querySelector(".live-functions").textContent,
+      ran: demo.querySelector("details summary").textContent,
+      cost: demo.querySelector(".live-cost + figcaption")?.textContent };
   });
 }
 
@@ -162,6 +164,10 @@ async function controls(browser, base) {
       assert(fast.png === course.png, `session ${session}: the fast engine's image differs`);
       assert(fast.functions === "paths_at_once::row" && course.functions.includes("pixel"),
         `session ${session}: the fast engine did not render: ${fast.functions}`);
+      assert(fast.ran.includes("fast engine") && course.ran.includes("course functions"),
+        `session ${session}: the list of functions is titled ${fast.ran}`);
+      assert(fast.cost === undefined || fast.cost.includes("course's searches only"),
+        `session ${session}: the fast engine's cost says ${fast.cost}`);
       assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
       await page.close();
     }

@@ -22,7 +22,7 @@
       if (message.job !== this.job) return;
       if (message.kind === "progress") {
         this.progress.hidden = false;
-        this.status.textContent = `${say("rendering the reference")}${french ? " " : ""}: ${message.rows} ${say("rows")}`;
+        this.status.textContent = `${say("rendering the reference")}${french ? "\u00a0" : ""}: ${message.rows} ${say("rows")}`;
       }
       if (message.kind === "checked") this.show(message);
       if (message.kind === "error") this.fail(message.message);
@@ -30,7 +30,7 @@
 
     build(stages) {
       this.stage = element("select", { className: "live-stage" },
-        ...stages.map((s) => element("option", { value: s.name, textContent: `${say("session")} ${s.session}${french ? " " : ""}: ${s.name}` })));
+        ...stages.map((s) => element("option", { value: s.name, textContent: `${say("session")} ${s.session}${french ? "\u00a0" : ""}: ${s.name}` })));
       this.file = element("input", { type: "file", accept: "image/png,image/jpeg" });
       this.button = element("button", { textContent: say("check"), onclick: () => this.check() });
       this.progress = element("progress", { hidden: true });

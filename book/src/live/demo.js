@@ -145,7 +145,8 @@
       this.statusLine = element("p", { className: "live-status" });
       this.timesTable = element("table", { className: "live-times" });
       this.functions = element("code", { className: "live-functions" });
-      const ran = element("details", {}, element("summary", { textContent: say("the course functions this image ran") }), this.functions);
+      this.functionsTitle = element("summary", { textContent: say("the course functions this image ran") });
+      const ran = element("details", {}, this.functionsTitle, this.functions);
       this.root.append(element("p", {}, `${say("stage")} `, this.select), images, this.controls, this.statusLine, this.timesTable, ran);
       this.pickStage();
     }
@@ -256,11 +257,13 @@
       const first = message.pass === 0;
       if (first) this.root.dataset.firstMs = Math.round(ms);
       this.functions.textContent = message.functions.join(", ");
+      this.functionsTitle.textContent = say(this.values.fast ? "the fast engine's function that made this image (beyond the course)"
+        : "the course functions this image ran");
       const last = message.pass === p.passes.length - 1;
       const per = say(samples > 1 ? "samples per pixel" : "sample per pixel");
-      const text = `${this.stage.name}, ${this.size} × ${this.size}${french ? " " : ""}: ${samples} ${per} ${say("in")} ${duration(ms)}`;
+      const text = `${this.stage.name}, ${this.size} × ${this.size}${french ? "\u00a0" : ""}: ${samples} ${per} ${say("in")} ${duration(ms)}`;
       const workers = `${this.workers.length} ${say("workers")}`;
-      this.status(last ? `${text} (${workers})` : `${text}${french ? " " : ""}; ${say("refining…")}`, last ? "done" : "working");
+      this.status(last ? `${text} (${workers})` : `${text}${french ? "\u00a0" : ""}; ${say("refining…")}`, last ? "done" : "working");
       if (!last) return;
       this.root.dataset.totalMs = Math.round(ms);
       this.root.dataset.edits = JSON.stringify(this.edited);
@@ -273,6 +276,12 @@
       const fast = !!this.values.fast;
       this.timesKey = `${search}${fast ? " fast" : ""}`;
       this.times[this.timesKey] = { search, fast, ms, samples, size: this.size };
+      if (fast) {
+        this.costCanvas.getContext("2d").clearRect(0, 0, this.size, this.size);
+        this.costCaption.textContent = say("cost: counted for the course's searches only");
+        this.showTimes();
+        return;
+      }
       this.workers[0].postMessage({ kind: "cost", job: this.job, stage: this.stage.name, edits: this.edited,
         width: this.size, height: this.size });
     }
@@ -281,7 +290,7 @@
       this.costCanvas.height = message.height;
       const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, message.height);
       this.costCanvas.getContext("2d").putImageData(pixels, 0, 0);
-      this.costCaption.textContent = `${say("cost")}${french ? " " : ""}: ${number(message.mean, 1)} ${say("tests per camera ray on average")}`;
+      this.costCaption.textContent = `${say("cost")}${french ? "\u00a0" : ""}: ${number(message.mean, 1)} ${say("tests per camera ray on average")}`;
       this.times[this.timesKey].cost = message.mean;
       this.showTimes();
     }
