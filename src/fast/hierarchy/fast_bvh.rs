@@ -334,13 +334,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn nodes_are_four_cache_lines_and_boxes_round_outwards() {
+    fn nodes_are_four_cache_lines() {
         assert_eq!(std::mem::size_of::<WideNode>(), 256);
-        for x in [0.1, -0.1, 1e-30, 3.0, -1e20] {
-            assert!(
-                round_down(x) as Real <= x && x <= round_up(x) as Real,
-                "{x}"
-            );
-        }
     }
 }

@@ -77,7 +77,10 @@ impl Stack {
     /// Of the children of `node` whose bit is set in `mask`, entered at `entry`,
     /// returns the nearest, to be visited next, and pushes the others, the nearer
     /// ones last so that they are popped first. One and two children, the most
-    /// frequent cases, are handled without sorting.
+    /// frequent cases, are handled without sorting. The child visited next is
+    /// given the entry 0: its box has just passed the test against the current
+    /// limit, which no hit can lower before it is visited, so its own entry is not
+    /// read.
     #[inline(always)]
     pub fn push_all_but_nearest(
         &mut self,
@@ -86,10 +89,11 @@ impl Stack {
         entry: [f32; WIDTH],
     ) -> Option<Pending> {
         let pending = |lane: usize| Pending::of(node, lane, entry[lane]);
+        let next = |lane: usize| Pending::of(node, lane, 0.0);
         let mut lanes = Bits(mask);
         let first = lanes.next()?;
         let Some(second) = lanes.next() else {
-            return Some(pending(first));
+            return Some(next(first));
         };
         if lanes.0 == 0 {
             let (near, far) = if entry[first] <= entry[second] {
@@ -98,13 +102,13 @@ impl Stack {
                 (second, first)
             };
             self.push(pending(far));
-            return Some(pending(near));
+            return Some(next(near));
         }
         let (keys, count) = farthest_first(mask, &entry);
         for &key in &keys[..count - 1] {
             self.push(pending(lane_of(key)));
         }
-        Some(pending(lane_of(keys[count - 1])))
+        Some(next(lane_of(keys[count - 1])))
     }
 }
 

@@ -40,19 +40,28 @@ impl WideNode {
     };
 }
 
-/// `x` rounded to single precision, downwards, then one float further: the margin
-/// absorbs the rounding of the box test's own subtraction.
+/// How far [`round_down`] and [`round_up`] move a number outwards before rounding it
+/// to single precision, relative to its size: `2^-21`, eight times the unit
+/// roundoff of single precision `u = 2^-24`.
+const OUTWARDS: Real = 1.0 / (1 << 21) as Real;
+
+/// The same move for numbers near zero: four times the smallest positive `f32`.
+const OUTWARDS_NEAR_ZERO: Real = 4.0 * f32::from_bits(1) as Real;
+
+/// `x` rounded to single precision downwards, at least two floats below it: the
+/// margin absorbs the rounding of the box test's own subtraction. Moving `x` down
+/// by `8 u |x|` (at least four spacings of single precision near `x`) and then
+/// rounding to the nearest float (half a spacing at most) lands three spacings
+/// below it or lower; the absolute term does the same for subnormal numbers. A
+/// number beyond single precision's range gives its largest float.
 pub fn round_down(x: Real) -> f32 {
-    let f = to_single(x);
-    let f = if (f as Real) > x { f.next_down() } else { f };
-    f.next_down()
+    to_single(x - (x.abs() * OUTWARDS + OUTWARDS_NEAR_ZERO)).min(f32::MAX)
 }
 
-/// `x` rounded to single precision, upwards, then one float further.
+/// `x` rounded to single precision upwards, at least two floats above it
+/// ([`round_down`]).
 pub fn round_up(x: Real) -> f32 {
-    let f = to_single(x);
-    let f = if (f as Real) < x { f.next_up() } else { f };
-    f.next_up()
+    to_single(x + (x.abs() * OUTWARDS + OUTWARDS_NEAR_ZERO)).max(-f32::MAX)
 }
 
 /// `1 + 2 delta_3` in single precision, rounded up.
@@ -193,3 +202,42 @@ pub fn enters_in<S: LaneSource>(
     S::Lanes::bits(entry.le(exit)) << source.first()
 }
 // ANCHOR_END: wide_slab
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::maths::{pixel_rng, uniform};
+
+    /// The second single-precision float strictly below `x`.
+    fn second_below(x: Real) -> f32 {
+        let f = to_single(x);
+        let below = if f as Real >= x { f.next_down() } else { f };
+        below.next_down()
+    }
+
+    /// `round_down` lands at least two floats below each number and `round_up` two
+    /// above, for numbers of every size and sign: zero, subnormal ones, powers of
+    /// two (where the spacing of floats halves below), single-precision ones and
+    /// numbers between them.
+    #[test]
+    fn rounding_moves_at_least_two_floats_outwards() {
+        let mut rng = pixel_rng(5, 0);
+        let mut numbers = vec![0.0, 1.0, 2.0, 0.5, 1e-45, 3e-45, 1e-40, 1e-38, 3e38];
+        for _ in 0..100_000 {
+            let exponent = (uniform(&mut rng) * 80.0 - 40.0) as i32;
+            numbers.push(uniform(&mut rng) * (2.0 as Real).powi(exponent));
+            numbers.push(to_single(*numbers.last().unwrap()) as Real);
+        }
+        for x in numbers.iter().flat_map(|&x| [x, -x]) {
+            assert!(round_down(x) <= second_below(x), "{x}");
+            assert!(-round_up(x) <= second_below(-x), "{x}");
+        }
+    }
+
+    #[test]
+    fn numbers_beyond_single_precision_round_to_its_largest() {
+        assert_eq!(round_down(1e300 as Real), f32::MAX);
+        assert_eq!(round_up(-1e300 as Real), -f32::MAX);
+        assert_eq!(round_up(1e300 as Real), f32::INFINITY);
+    }
+}
