@@ -95,6 +95,21 @@ impl FastBvh {
         }
     }
 
+    /// Starts loading the children of `node` whose bit is set in `mask`, nodes or
+    /// a leaf's first triangle group, so that each is in the cache by the time the
+    /// search reaches it, the nearest while the others are pushed. A hint, which
+    /// changes no result.
+    #[inline(always)]
+    fn prefetch_children(&self, tests: impl EightLanes, node: &WideNode, mask: u32) {
+        for lane in Bits(mask) {
+            let child = node.child[lane] as usize;
+            match node.count[lane] {
+                0 => tests.prefetch(&self.nodes[child]),
+                _ => tests.prefetch(&self.groups[child]),
+            }
+        }
+    }
+
     /// The triangle groups of a leaf: group `g` holds slots `8 g` to `8 g + 7`.
     #[inline]
     fn groups_of(leaf: Pending) -> std::ops::Range<usize> {
@@ -194,8 +209,9 @@ impl FastBvh {
     /// mesh's box (most rays, in a room where the mesh is small) is turned away by
     /// that one slab test, as the course's bounding box does, before anything else
     /// is computed for it. Of the children a ray enters, the nearest is visited next
-    /// and the others wait on the stack, nearer ones on top; a child is skipped when
-    /// popped if a hit found meanwhile is closer than its box. In a leaf, only the
+    /// and the others wait on the stack, nearer ones on top, all of them asked of
+    /// the memory at once; a child is skipped when popped if a hit found meanwhile is
+    /// closer than its box. In a leaf, only the
     /// triangles the pre-test keeps get the exact test.
     #[inline(always)]
     fn nearest_with(
@@ -223,6 +239,7 @@ impl FastBvh {
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
                 let (mask, entry) = tests.enters(&wide, node, box_limit);
+                self.prefetch_children(tests, node, mask);
                 next = stack.push_all_but_nearest(node, mask, entry);
                 continue;
             }

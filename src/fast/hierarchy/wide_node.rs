@@ -137,6 +137,13 @@ pub trait EightLanes: Copy {
     /// The triangles of `group` that `ray` may meet
     /// ([`TriangleGroup::candidates_in`]).
     fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32;
+
+    /// Starts loading `item` into the cache where the processor can be asked to
+    /// ([`Avx::prefetch`]); nothing elsewhere. A hint, which changes no result.
+    #[inline(always)]
+    fn prefetch<T>(self, item: &T) {
+        let _ = item;
+    }
 }
 
 /// The tests on any processor: eight lanes as two halves of four.
@@ -168,6 +175,11 @@ impl EightLanes for Avx {
     #[inline(always)]
     fn candidates(self, group: &TriangleGroup, ray: &GroupRay) -> u32 {
         group.candidates_in(ray, self)
+    }
+
+    #[inline(always)]
+    fn prefetch<T>(self, item: &T) {
+        Avx::prefetch(self, item);
     }
 }
 
