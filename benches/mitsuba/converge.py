@@ -36,7 +36,10 @@ def read_reference(path):
     """A raycourse reference file as an array of shape (height, width, 3), the top
     row first, in double precision."""
     import numpy as np
-    data = Path(path).read_bytes()
+    try:
+        data = Path(path).read_bytes()
+    except OSError as error:
+        sys.exit(f"{path}: cannot read the reference: {error.strerror}")
     if not data.startswith(MAGIC):
         sys.exit(f"{path}: not a raycourse reference file (no `{MAGIC.decode().strip()}` line)")
     width, height = struct.unpack_from("<II", data, len(MAGIC))
