@@ -3,6 +3,8 @@
 # (book/src/figures/speed/): convergence studies of the course's stages, with the
 # CSV files behind every plot. Prints each study's slopes and efficiencies.
 # Takes a few minutes; times depend on the machine, so the plots' time axes do too.
+# The last study also renders with Mitsuba 3, which benches/mitsuba/converge.py
+# installs from PyPI into target/mitsuba-venv on its first run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=book/src/figures/speed

@@ -85,10 +85,12 @@ def main():
     parser.add_argument("stage", nargs="?", default="antialiasing", choices=sorted(STAGES))
     parser.add_argument("--reference", required=True,
                         help="raycourse's reference file (.ref) for the stage at this size")
-    parser.add_argument("--size", type=int, default=64)
-    parser.add_argument("--max-spp", type=int, default=256)
+    parser.add_argument("--size", type=int, default=64, help="width and height in pixels")
+    parser.add_argument("--max-spp", type=int, default=256,
+                        help="the largest sample count of the ladder 1, 2, 4, ...")
     parser.add_argument("--threads", type=int, default=os.cpu_count())
-    parser.add_argument("--out", default=str(ROOT / "target" / "mitsuba-converge.csv"))
+    parser.add_argument("--out", default=str(ROOT / "target" / "mitsuba-converge.csv"),
+                        help="the CSV file of rungs")
     args = parser.parse_args()
     in_venv()
     import mitsuba as mi
