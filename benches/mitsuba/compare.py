@@ -116,6 +116,19 @@ def region_means(image, grid=4):
             for r in range(grid) for c in range(grid)]
 
 
+def timed_render(mi, loaded, spp):
+    """The image of the loaded scene at `spp` samples, as a double-precision array,
+    and the seconds its render took, waiting for every kernel to finish."""
+    import drjit as dr
+    import numpy as np
+    start = time.perf_counter()
+    image = mi.render(loaded, spp=spp)
+    dr.eval(image)
+    dr.sync_thread()
+    seconds = time.perf_counter() - start
+    return np.array(image, dtype=np.float64), seconds
+
+
 def render_mitsuba(mi, variant, scene, args):
     """The image (linear) and the seconds of a render, after a warm-up render that
     compiles the variant's kernels."""
@@ -124,13 +137,7 @@ def render_mitsuba(mi, variant, scene, args):
     dr.set_thread_count(args.threads)
     loaded = mi.load_dict(mitsuba_scene(mi, scene, args.size, args.spp, 1))
     mi.render(loaded, spp=1)
-    start = time.perf_counter()
-    image = mi.render(loaded, spp=args.spp)
-    dr.eval(image)
-    dr.sync_thread()
-    seconds = time.perf_counter() - start
-    import numpy as np
-    return np.array(image), seconds
+    return timed_render(mi, loaded, args.spp)
 
 
 # Where each precision's build of raycourse goes.

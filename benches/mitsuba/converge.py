@@ -21,12 +21,11 @@ import argparse
 import os
 import struct
 import sys
-import time
 import tomllib
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from compare import ROOT, STAGES, has_llvm, in_venv, mitsuba_scene  # noqa: E402
+from compare import ROOT, STAGES, has_llvm, in_venv, mitsuba_scene, timed_render  # noqa: E402
 
 # The first line of a raycourse reference file (`render::cache`).
 MAGIC = b"raycourse reference 1\n"
@@ -60,20 +59,15 @@ def image_error(image, reference):
 def rungs(mi, variant, scene, args, reference):
     """The variant's CSV rows, one per sample count."""
     import drjit as dr
-    import numpy as np
     mi.set_variant(variant)
     dr.set_thread_count(args.threads)
     rows = []
     samples = 1
     while samples <= args.max_spp:
         loaded = mi.load_dict(mitsuba_scene(mi, scene, args.size, samples, 1))
-        for _ in range(2):
-            start = time.perf_counter()
-            image = mi.render(loaded, spp=samples)
-            dr.eval(image)
-            dr.sync_thread()
-            seconds = time.perf_counter() - start
-        rmse, rel_mse = image_error(np.array(image, dtype=np.float64), reference)
+        timed_render(mi, loaded, samples)
+        image, seconds = timed_render(mi, loaded, samples)
+        rmse, rel_mse = image_error(image, reference)
         efficiency = 1.0 / (rmse * rmse * seconds)
         rows.append(f"Mitsuba {variant},{samples},{seconds},{rmse},{rel_mse},{efficiency}")
         samples *= 2

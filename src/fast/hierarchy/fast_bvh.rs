@@ -210,9 +210,9 @@ impl FastBvh {
     /// that one slab test, as the course's bounding box does, before anything else
     /// is computed for it. Of the children a ray enters, the nearest is visited next
     /// and the others wait on the stack, nearer ones on top, all of them asked of
-    /// the memory at once; a child is skipped when popped if a hit found meanwhile is
-    /// closer than its box. In a leaf, only the
-    /// triangles the pre-test keeps get the exact test.
+    /// the memory at once; a child is skipped when popped if a hit found meanwhile
+    /// is closer than its box. In a leaf, only the triangles the pre-test keeps get
+    /// the exact test.
     #[inline(always)]
     fn nearest_with(
         &self,
