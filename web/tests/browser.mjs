@@ -227,12 +227,14 @@ async function checkPage(browser, base, stage, file) {
   await page.select(".live-check select.live-stage", stage);
   const input = await page.$('.live-check input[type="file"]');
   await input.uploadFile(file);
+  const started = Date.now();
   await page.click(".live-check button");
   await page.waitForSelector('.live-check[data-state="matches"], .live-check[data-state="differs"], .live-check[data-state="error"]', { timeout: 300000 });
   const answer = await page.evaluate(() => {
     const root = document.querySelector(".live-check");
     return { state: root.dataset.state, report: root.querySelector(".live-report").textContent };
   });
+  answer.ms = Date.now() - started;
   answer.errors = page.errors;
   await page.close();
   return answer;
@@ -269,8 +271,9 @@ async function checks(browser, base) {
 /** The demos' times at their sizes (256 x 256, but 128 x 128 for session 5): in
  * sessions 1 and 2, a control's change to the image, the median of five; in the
  * Monte Carlo sessions, the first pass at one sample per pixel and all the samples,
- * as the page opens, then with the fast engine. Printed, not asserted: a timed test
- * would fail on a busy machine. */
+ * as the page opens, then with the fast engine. Then the check page's, from its
+ * button to its answer, on an image of `glass` and one of `indirect` that the command
+ * rendered. Printed, not asserted: a timed test would fail on a busy machine. */
 async function speed(browser, base) {
   console.log(`Chromium ${await browser.version()}, ${os.cpus()[0].model}, ${os.cpus().length} cores`);
   console.log("session | stage | size | samples | first pass | all samples | first pass, fast | all samples, fast");
@@ -295,6 +298,15 @@ async function speed(browser, base) {
     }
     console.log(`${session} | ${times[0].stage} | ${size} | ${samples} | ${median("firstMs")} ms | ${median("totalMs")} ms | ${fast}`);
     await page.close();
+  }
+  console.log("check page | stage | size | answer | seconds");
+  for (const [scene, size] of [["s2/glass", 512], ["s3/indirect", 256]]) {
+    const stage = path.basename(scene);
+    const file = path.join(scratch, `${stage}.png`);
+    execFileSync(raycourse, ["render", path.join(root, `sessions/${scene}.toml`), "--width", `${size}`,
+      "--height", `${size}`, "--out", file, "--quiet"]);
+    const answer = await checkPage(browser, base, stage, file);
+    console.log(`check page | ${stage} | ${size} x ${size} | ${answer.state} | ${(answer.ms / 1000).toFixed(2)} s`);
   }
 }
 
