@@ -330,5 +330,5 @@ try {
   server.close();
 }
 const failed = results.filter(([, error]) => error).length;
-console.log(`${results.length - failed} passed, ${failed} failed`);
+if (results.length) console.log(`${results.length - failed} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);
