@@ -21,6 +21,15 @@ embree=${EMBREE_BENCH:-../shared/tools/embree-bench}
 mesh=assets/ogre/ogre.obj
 sets=/tmp/raysets/ogre
 images=target/speed-tables
+
+# Everything the run needs, checked before its first measurement.
+missing() { echo "speed-tables.sh: $1" >&2; exit 1; }
+[ -x "$embree/run.sh" ] || missing "no Embree tool at $embree (set EMBREE_BENCH to its folder)"
+command -v c++ >/dev/null || missing "no C++ compiler (c++), which the peers benchmark's tinybvh needs"
+command -v python3 >/dev/null || missing "no python3, which Mitsuba's comparison needs"
+command -v node >/dev/null || missing "no node, which the browser's table needs"
+[ -d web/node_modules/puppeteer-core ] || missing "no puppeteer-core in web/node_modules (run: cd web && npm ci)"
+[ -x "${CHROMIUM:-/usr/bin/chromium}" ] || missing "no Chromium at ${CHROMIUM:-/usr/bin/chromium} (set CHROMIUM)"
 mkdir -p "$images"
 exec > >(tee "$out")
 
