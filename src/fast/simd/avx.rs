@@ -26,9 +26,7 @@ impl Avx {
     pub fn detect() -> Option<Avx> {
         std::arch::is_x86_feature_detected!("avx").then_some(Avx(()))
     }
-}
 
-impl Avx {
     /// Asks the processor to start loading `item`, every 64-byte cache line of it,
     /// into its nearest cache, so that a read a little later finds it there instead
     /// of waiting on memory. A hint: it reads nothing the program sees and changes no
