@@ -262,7 +262,9 @@ impl FastBvh {
     // ANCHOR_END: fast_traverse
 
     /// Whether `ray` meets any triangle of `mesh` closer than `t_max`, stopping at
-    /// the first one found; the boxes and triangle groups tested by `tests`.
+    /// the first one found; the boxes and triangle groups tested by `tests`, and the
+    /// children a ray enters asked of the memory at once, as in the nearest hit's
+    /// search.
     #[inline(always)]
     fn occluded_with(&self, tests: impl EightLanes, mesh: &Mesh, ray: &Ray, t_max: Real) -> bool {
         let inv_direction = ray.direction.recip();
@@ -278,6 +280,7 @@ impl FastBvh {
             if pending.count == 0 {
                 let node = &self.nodes[pending.child as usize];
                 let (mask, _) = tests.enters(&wide, node, limit);
+                self.prefetch_children(tests, node, mask);
                 stack.push_all(node, mask);
                 continue;
             }
