@@ -159,6 +159,24 @@ mod tests {
         ShearedRay::new(ray).intersect(a, b, c, t_max)
     }
 
+    /// The ray's `z` axis is its direction's largest component, whatever its sign;
+    /// on a tie `x` wins over `y` and `z`, and `y` over `z`, as the frame's
+    /// branch-free choice promises; `x` and `y` follow it in cyclic order.
+    #[test]
+    fn the_largest_direction_component_becomes_z() {
+        let cases = [
+            (Vec3::new(3.0, -1.0, 2.0), [1, 2, 0]),
+            (Vec3::new(1.0, -3.0, 2.0), [2, 0, 1]),
+            (Vec3::new(1.0, 2.0, -3.0), [0, 1, 2]),
+            (Vec3::new(-2.0, 2.0, 2.0), [1, 2, 0]),
+            (Vec3::new(1.0, -2.0, 2.0), [2, 0, 1]),
+        ];
+        for (direction, axes) in cases {
+            let ray = Ray::new(Vec3::ZERO, direction);
+            assert_eq!(ShearedRay::new(&ray).axes, axes, "{direction}");
+        }
+    }
+
     #[test]
     fn agrees_with_the_course_test_inside_the_triangle() {
         let ray = Ray::new(Vec3::new(0.25, 0.5, 3.0), -Vec3::Z);
