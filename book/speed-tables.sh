@@ -4,8 +4,9 @@
 # and the compiler: every stage at the course's settings (`bench`), one thread against
 # two, the hierarchies on the Embree benchmark's ray sets beside Embree, tinybvh and
 # obvhs, the sphere stages beside Mitsuba 3 in both precisions, and the live book in
-# headless Chromium. Each figure is a time, so run it on an otherwise idle machine;
-# it takes about 40 minutes on two cores.
+# headless Chromium, then the medians the appendix gives (book/speed-medians.py). Each
+# figure is a time, so run it on an otherwise idle machine; it takes about 20 minutes
+# on two cores once Mitsuba 3 is installed.
 #
 # Needs a C++ compiler (tinybvh), Python 3 (Mitsuba 3 is installed into
 # target/mitsuba-venv on the first run), the Embree tool (EMBREE_BENCH, by default
@@ -83,3 +84,6 @@ done
 echo "## In the browser: the live book's demos and check page in headless Chromium"
 cargo xtask book >/dev/null
 RAYCOURSE=$fastest node web/tests/browser.mjs --speed
+
+echo "## The medians the appendix gives, by book/speed-medians.py"
+python3 book/speed-medians.py "$out"
