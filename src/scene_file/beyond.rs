@@ -18,6 +18,7 @@ use crate::maths::Real;
 use crate::maths::values::Positive;
 use crate::scene::Scene;
 use crate::scene::beyond::{Beyond, Sampler};
+use crate::scene_file::field_names::field_names;
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
 use crate::scene_file::load::{checked, parse_table, read_source, read_table};
 use crate::scene_file::sessions::check_materials;
@@ -41,9 +42,6 @@ pub struct BeyondKeys {
     #[serde(default)]
     pub fast: bool,
 }
-
-/// The names of [`BeyondKeys`] in a scene file's `[render]` table.
-const KEYS: [&str; 4] = ["leaf_size", "sampler", "noise", "fast"];
 
 /// A scene file's keys beyond the course, under `[render]` as in the file.
 #[derive(Deserialize)]
@@ -134,7 +132,7 @@ fn take_keys<'s>(table: &mut Spanned<DeTable<'s>>) -> Spanned<DeTable<'s>> {
     let span = table.span();
     let mut render = DeTable::new();
     if let Some(DeValue::Table(course)) = table.get_mut().get_mut("render").map(|v| v.get_mut()) {
-        for key in KEYS {
+        for &key in field_names::<BeyondKeys>() {
             if let Some((key, value)) = course.remove_entry(key) {
                 render.insert(key, value);
             }

@@ -16,6 +16,7 @@
 //! | [`session6`] | 6 | hierarchies and smooth normals |
 //! | [`session7`] | 7 | textures and the aimed camera |
 //! | [`beyond`](mod@beyond) | `beyond` | the sampler, adaptive sampling and the fast engine, on top of the course's scene |
+//! | [`field_names`] | `beyond` | a struct's keys, asked of serde rather than listed again |
 //! | [`stages`](mod@stages) | 1 | the course's stages, one scene file each |
 
 pub mod consistency;
@@ -40,6 +41,8 @@ pub mod session7;
 
 #[cfg(feature = "beyond")]
 pub mod beyond;
+#[cfg(feature = "beyond")]
+pub mod field_names;
 
 pub use error::{SceneError, one_line};
 pub use features::SESSION;
