@@ -13,6 +13,7 @@ code 1: the appendix's tables are then not the run's.
 Usage: python3 book/speed-medians.py [TABLES] [--check [BOOK]]
 """
 
+import argparse
 import re
 import statistics
 import sys
@@ -71,10 +72,8 @@ def peers_rows(lines, embree_medians):
             columns[row[1]].append([float(cell) for cell in cells])
     rows = []
     for rays in SETS:
-        runs = columns[rays]
-        cells = [f"{median(list(c), f'peers {rays}'):.2f}" for c in zip(*runs)] if runs else []
-        if not cells:
-            median([], f"the peers benchmark's {rays} rays")
+        runs = columns[rays] or median([], f"the peers benchmark's {rays} rays")
+        cells = [f"{statistics.median(column):.2f}" for column in zip(*runs)]
         rows.append(f"| {rays} | {embree_medians[rays]} | {' | '.join(cells)} |")
     return rows
 
@@ -109,7 +108,7 @@ def mitsuba_rows(lines):
             if row[1] == "1":
                 regions[(stage, renderer)] = row[5].strip().replace(", ", " / ")
     rows = []
-    for stage in stages:
+    for stage in stages or median([], "Mitsuba's comparison"):
         medians = [median(times[(stage, r)], f"{r} on {stage}") for r in RENDERERS]
         cells = [f"{medians[0]:.2f} s"]
         cells += [f"{m:.2f} s ({medians[0] / m:.2f}x)" for m in medians[1:]]
@@ -127,26 +126,27 @@ def read(path):
 
 
 def main():
-    args = sys.argv[1:]
-    check = "--check" in args
-    if check:
-        at = args.index("--check")
-        book = Path(args[at + 1]) if at + 1 < len(args) else ROOT / "book/src/speed.md"
-        args = args[:at]
-    tables = Path(args[0]) if args else ROOT / "book/src/figures/speed/tables.txt"
-    lines = read(tables).splitlines()
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument(
+        "tables", nargs="?", type=Path, default=ROOT / "book/src/figures/speed/tables.txt"
+    )
+    parser.add_argument(
+        "--check", nargs="?", type=Path, const=ROOT / "book/src/speed.md", metavar="BOOK"
+    )
+    args = parser.parse_args()
+    lines = read(args.tables).splitlines()
     rows, embree_medians = hierarchy_rows(lines)
     rows += peers_rows(lines, embree_medians) + threads_rows(lines) + mitsuba_rows(lines)
-    if not check:
+    if not args.check:
         print("\n".join(rows))
         return
-    book_lines = set(read(book).splitlines())
+    book_lines = set(read(args.check).splitlines())
     missing = [row for row in rows if row not in book_lines]
     for row in missing:
-        print(f"{book}: no line reads\n  {row}\nwhich is what {tables} gives", file=sys.stderr)
+        print(f"{args.check}: no line reads\n  {row}\nwhich is what {args.tables} gives", file=sys.stderr)
     if missing:
         sys.exit(1)
-    print(f"{book}: its {len(rows)} rows of medians are those of {tables}")
+    print(f"{args.check}: its {len(rows)} rows of medians are those of {args.tables}")
 
 
 if __name__ == "__main__":
