@@ -1,5 +1,7 @@
 //! The book's comparison figures, each made of renders of the crate side by side
-//! with a label above each panel:
+//! with a label above each panel, written twice from the same renders: with English
+//! labels into the output folder, and with French ones into its `fr/` folder, for
+//! the French edition:
 //!
 //! - `antialiasing.png`: the edge of the sphere, magnified, without and with the
 //!   Gaussian jitter of session 3 (crops of the figures `indirect` and `antialiasing`);
@@ -55,8 +57,65 @@ fn render_stage(session: u32, name: &str, size: u32, edit: &dyn Fn(&str) -> Stri
     image::load_from_memory(&png).expect("a PNG").to_rgb8()
 }
 
-/// `panels` side by side, each under its label, with a white gap between them.
-fn side_by_side(panels: &[(&str, RgbImage)]) -> RgbImage {
+/// A panel's label in the book's two editions.
+struct Label {
+    /// The English edition's label.
+    english: String,
+    /// The French edition's label.
+    french: String,
+}
+
+/// The label `english` in the English edition and `french` in the French one.
+fn say(english: &str, french: &str) -> Label {
+    Label {
+        english: english.to_owned(),
+        french: french.to_owned(),
+    }
+}
+
+/// The book's editions, each with the language of its figures' labels.
+#[derive(Clone, Copy)]
+enum Edition {
+    English,
+    French,
+}
+
+impl Edition {
+    /// This edition's text of `label`.
+    fn of(self, label: &Label) -> &str {
+        match self {
+            Edition::English => &label.english,
+            Edition::French => &label.french,
+        }
+    }
+}
+
+/// A figure: rows of labelled panels, the rows one above the other.
+type Figure = Vec<Vec<(Label, RgbImage)>>;
+
+/// `figure` with its labels in `edition`'s language: each row's panels side by
+/// side, each under its label, with a white gap between them.
+fn compose(figure: &Figure, edition: Edition) -> RgbImage {
+    let rows: Vec<RgbImage> = figure
+        .iter()
+        .map(|row| side_by_side(row, edition))
+        .collect();
+    let mut out = RgbImage::from_pixel(
+        rows[0].width(),
+        rows.iter().map(|r| r.height()).sum(),
+        Rgb([255; 3]),
+    );
+    let mut y = 0;
+    for row in &rows {
+        imageops::replace(&mut out, row, 0, i64::from(y));
+        y += row.height();
+    }
+    out
+}
+
+/// `panels` side by side, each under its label in `edition`'s language, with a
+/// white gap between them.
+fn side_by_side(panels: &[(Label, RgbImage)], edition: Edition) -> RgbImage {
     let (w, h) = panels[0].1.dimensions();
     let gap = 8;
     let width = panels.len() as u32 * (w + gap) - gap;
@@ -72,7 +131,7 @@ fn side_by_side(panels: &[(&str, RgbImage)]) -> RgbImage {
     let labels: Vec<(&str, u32)> = panels
         .iter()
         .enumerate()
-        .map(|(k, (label, _))| (*label, k as u32 * (w + gap)))
+        .map(|(k, (label, _))| (edition.of(label), k as u32 * (w + gap)))
         .collect();
     label(&mut out, &labels);
     out
@@ -105,74 +164,80 @@ fn magnified(image: &RgbImage, (x, y): (u32, u32), size: u32, zoom: u32) -> RgbI
 }
 
 /// The edge of the sphere without and with antialiasing, from the book's figures.
-fn antialiasing(figures: &Path) -> RgbImage {
+fn antialiasing(figures: &Path) -> Figure {
     let open = |name: &str| image::open(figures.join(name)).expect("a figure").to_rgb8();
     let corner = (300, 190);
-    side_by_side(&[
+    vec![vec![
         (
-            "without antialiasing",
+            say("without antialiasing", "sans antialiasing"),
             magnified(&open("indirect.png"), corner, 64, 4),
         ),
         (
-            "with antialiasing",
+            say("with antialiasing", "avec antialiasing"),
             magnified(&open("antialiasing.png"), corner, 64, 4),
         ),
-    ])
+    ]]
 }
 
 /// The glass ball with its shadow rays, and without.
-fn glass_shadow() -> RgbImage {
+fn glass_shadow() -> Figure {
     let same = |text: &str| text.to_owned();
     let off = |text: &str| text.replace("shadows = true", "shadows = false");
-    side_by_side(&[
-        ("with shadow rays", render_stage(2, "glass", 256, &same)),
-        ("without", render_stage(2, "glass", 256, &off)),
-    ])
+    vec![vec![
+        (
+            say("with shadow rays", "avec rayons d'ombre"),
+            render_stage(2, "glass", 256, &same),
+        ),
+        (say("without", "sans"), render_stage(2, "glass", 256, &off)),
+    ]]
 }
 
 /// Spot under a light five times dimmer and direct light only, so that its
 /// shading follows its normals, flat and smooth, magnified on its head.
-fn smooth_normals() -> RgbImage {
+fn smooth_normals() -> Figure {
     let dim = |text: &str| {
         text.replace("intensity = 2e10", "intensity = 4e9")
             .replace("indirect = true", "indirect = false")
     };
     let head = (96, 64);
-    side_by_side(&[
+    vec![vec![
         (
-            "flat normals",
+            say("flat normals", "normales plates"),
             magnified(&render_stage(6, "bvh", 320, &dim), head, 128, 2),
         ),
         (
-            "smooth normals",
+            say("smooth normals", "normales lissées"),
             magnified(&render_stage(6, "smooth-normals", 320, &dim), head, 128, 2),
         ),
-    ])
+    ]]
 }
 
 /// The room with a bounce limit of 2, with Russian roulette past it, and with 5.
-fn roulette() -> RgbImage {
+fn roulette() -> Figure {
     let limit = |text: &str| text.replace("russian_roulette = 0.7\n", "");
     let deep = |text: &str| limit(text).replace("bounces = 2", "bounces = 5");
     let same = |text: &str| text.to_owned();
-    side_by_side(&[
+    vec![vec![
         (
-            "2 bounces",
+            say("2 bounces", "2 rebonds"),
             render_stage(4, "russian-roulette", 192, &limit),
         ),
         (
-            "2 bounces + roulette",
+            say("2 bounces + roulette", "2 rebonds + roulette"),
             render_stage(4, "russian-roulette", 192, &same),
         ),
-        ("5 bounces", render_stage(4, "russian-roulette", 192, &deep)),
-    ])
+        (
+            say("5 bounces", "5 rebonds"),
+            render_stage(4, "russian-roulette", 192, &deep),
+        ),
+    ]]
 }
 
 /// The textured cow, its texture linearised as it should be and, wrongly, not: the
 /// texture given to the second render holds `255 (v / 255)^(1 / 2.2)`, which the
 /// renderer's conversion turns back into `v / 255`, the value a renderer that forgot
 /// the conversion would use.
-fn texture_gamma(scratch: &Path) -> RgbImage {
+fn texture_gamma(scratch: &Path) -> Figure {
     let texture = image::open("assets/spot/spot_texture.png")
         .expect("the texture")
         .to_rgb8();
@@ -190,16 +255,16 @@ fn texture_gamma(scratch: &Path) -> RgbImage {
     };
     let same = |text: &str| text.to_owned();
     let body = (72, 72);
-    side_by_side(&[
+    vec![vec![
         (
-            "converted to linear",
+            say("converted to linear", "convertie en linéaire"),
             magnified(&render_stage(7, "textures", 320, &same), body, 160, 2),
         ),
         (
-            "used as it is",
+            say("used as it is", "utilisée telle quelle"),
             magnified(&render_stage(7, "textures", 320, &wrong), body, 160, 2),
         ),
-    ])
+    ]]
 }
 
 fn main() {
@@ -220,22 +285,29 @@ fn main() {
         ("epsilon.png", epsilon::figure()),
         ("cost.png", cost()),
     ];
-    for (name, image) in made {
-        let png =
-            raycourse::render::png::encode_rgb8(image.as_raw(), image.width(), image.height());
-        std::fs::write(out.join(name), png).expect("figure written");
-        println!("{}", out.join(name).display());
+    std::fs::create_dir_all(out.join("fr")).expect("output folder");
+    for (name, figure) in made {
+        for (edition, folder) in [
+            (Edition::English, out.clone()),
+            (Edition::French, out.join("fr")),
+        ] {
+            let image = compose(&figure, edition);
+            let png =
+                raycourse::render::png::encode_rgb8(image.as_raw(), image.width(), image.height());
+            std::fs::write(folder.join(name), png).expect("figure written");
+            println!("{}", folder.join(name).display());
+        }
     }
     std::fs::remove_dir_all(scratch).expect("scratch folder removed");
 }
 
 /// The three mesh stages' images of cost (`--aov cost`), each labelled with its
 /// mean: the tests a camera ray takes, from brute force to the BVH.
-fn cost() -> RgbImage {
-    let panels: Vec<(String, RgbImage)> = [
-        (5, "mesh", "brute force"),
-        (5, "mesh-bbox", "box"),
-        (6, "bvh", "BVH"),
+fn cost() -> Figure {
+    let panels = [
+        (5, "mesh", say("brute force", "force brute")),
+        (5, "mesh-bbox", say("box", "boîte")),
+        (6, "bvh", say("BVH", "BVH")),
     ]
     .into_iter()
     .map(|(session, name, search)| {
@@ -249,14 +321,30 @@ fn cost() -> RgbImage {
         let seen = see(&scene, Aov::Cost);
         let mean = seen.mean.expect("every ray costs something");
         let image = RgbImage::from_raw(seen.width, seen.height, seen.rgb).expect("the size");
-        (format!("{search}: {mean:.1} tests a ray"), image)
+        let label = Label {
+            english: format!("{}: {mean:.1} tests a ray", search.english),
+            french: format!("{}\u{a0}: {} tests", search.french, french_number(mean)),
+        };
+        (label, image)
     })
     .collect();
-    let labelled: Vec<(&str, RgbImage)> = panels
-        .iter()
-        .map(|(l, i)| (l.as_str(), i.clone()))
-        .collect();
-    side_by_side(&labelled)
+    vec![panels]
+}
+
+/// `x` with one decimal as French writes it: a decimal comma, and a non-breaking
+/// space between groups of three digits (`5 863,0`).
+fn french_number(x: Real) -> String {
+    let text = format!("{x:.1}");
+    let (whole, decimal) = text.split_once('.').expect("one decimal");
+    let digits: Vec<char> = whole.chars().collect();
+    let mut grouped = String::new();
+    for (k, digit) in digits.iter().enumerate() {
+        if k > 0 && (digits.len() - k).is_multiple_of(3) {
+            grouped.push('\u{a0}');
+        }
+        grouped.push(*digit);
+    }
+    format!("{grouped},{decimal}")
 }
 
 /// A fresh scratch folder.
@@ -327,22 +415,44 @@ mod epsilon {
     }
 
     /// The two rows, one above the other.
-    pub fn figure() -> RgbImage {
-        let row = |fixed: bool, name: &str| {
-            let panels: Vec<(String, RgbImage)> = SCALES
+    pub fn figure() -> Figure {
+        let row = |fixed: bool, name: Label| {
+            SCALES
                 .iter()
-                .map(|(scale, text)| (format!("{name}, scale {text}"), tile(*scale, fixed)))
-                .collect();
-            let borrowed: Vec<(&str, RgbImage)> = panels
-                .iter()
-                .map(|(l, i)| (l.as_str(), i.clone()))
-                .collect();
-            side_by_side(&borrowed)
+                .map(|(scale, text)| {
+                    let label = Label {
+                        english: format!("{}, scale {text}", name.english),
+                        french: format!("{}, {text}", name.french),
+                    };
+                    (label, tile(*scale, fixed))
+                })
+                .collect()
         };
-        let (top, bottom) = (row(true, "fixed epsilon"), row(false, "error bound"));
-        let mut out = RgbImage::from_pixel(top.width(), top.height() * 2, Rgb([255; 3]));
-        imageops::replace(&mut out, &top, 0, 0);
-        imageops::replace(&mut out, &bottom, 0, i64::from(top.height()));
-        out
+        vec![
+            row(true, say("fixed epsilon", "epsilon fixe")),
+            row(false, say("error bound", "borne d'erreur")),
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Groups of three digits from the right, split by non-breaking spaces, and a
+    /// decimal comma: the thousands at every size, and none below them.
+    #[test]
+    fn numbers_are_written_the_french_way() {
+        let cases = [
+            (0.54, "0,5"),
+            (12.6, "12,6"),
+            (999.94, "999,9"),
+            (1180.8, "1\u{a0}180,8"),
+            (5863.0, "5\u{a0}863,0"),
+            (1_234_567.0, "1\u{a0}234\u{a0}567,0"),
+        ];
+        for (x, french) in cases {
+            assert_eq!(french_number(x), french, "{x}");
+        }
     }
 }
