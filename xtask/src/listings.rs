@@ -10,7 +10,8 @@
 //!
 //! `{{#exercises sN}}` becomes the table of session N's exercises, read from their
 //! markers in the view's code (see [`crate::exercise`]) and their checklist lines
-//! from `tests/exercises/sN.rs`.
+//! from `tests/exercises/sN.rs`; the French edition names each exercise with the
+//! French title its checklist entry gives `cargo test -- --lang fr`.
 //!
 //! An image alone on its line, `![Figure 1: a white disk](figures/white-disk.png)`,
 //! becomes a figure whose text is shown under it as its caption (and kept as the
@@ -57,6 +58,9 @@ struct Words {
     header: &'static str,
     /// Between two functions of one exercise.
     and: &'static str,
+    /// Whether an exercise is named by its checklist entry's French title instead
+    /// of its marker's English one.
+    french_titles: bool,
 }
 
 const ENGLISH: Words = Words {
@@ -66,6 +70,7 @@ const ENGLISH: Words = Words {
     beyond: "beyond the course",
     header: "| exercise | what you write | function | file | checklist line |",
     and: " and ",
+    french_titles: false,
 };
 
 const FRENCH: Words = Words {
@@ -75,6 +80,7 @@ const FRENCH: Words = Words {
     beyond: "au-delà du cours",
     header: "| exercice | ce que vous écrivez | fonction | fichier | ligne de la liste de contrôle |",
     and: " et ",
+    french_titles: true,
 };
 
 /// Fills the listings of every chapter under `value`.
@@ -219,15 +225,32 @@ fn exercise_table(n: u32, views: &Path, words: &Words) -> Result<String, String>
             })
             .map(|l| l.trim_end_matches("\",").to_owned())
             .ok_or_else(|| format!("exercise {id} has no line in tests/exercises/s{n}.rs"))?;
+        let title = if words.french_titles {
+            french_title(&checks, &line).ok_or_else(|| {
+                format!("exercise {id} has no French title in tests/exercises/s{n}.rs")
+            })?
+        } else {
+            group[0].0.title.clone()
+        };
         table += &format!(
-            "| {id} | {} | {} | `{}` | `{line}` |\n",
-            group[0].0.title,
+            "| {id} | {title} | {} | `{}` | `{line}` |\n",
             functions.join(words.and),
             group[0].1
         );
         i += group.len();
     }
     Ok(table)
+}
+
+/// The French title of the exercise whose checklist line is `line`: the first string
+/// of the `french: [title, section]` that follows its `name` in the checklist
+/// `checks`, its `\u{a0}` escapes made non-breaking spaces.
+fn french_title(checks: &str, line: &str) -> Option<String> {
+    let after_name = &checks[checks.find(&format!("name: \"{line}\""))?..];
+    let after_french = &after_name[after_name.find("french: [")?..];
+    let start = after_french.find('"')? + 1;
+    let end = start + after_french[start..].find('"')?;
+    Some(after_french[start..end].replace("\\u{a0}", "\u{a0}"))
 }
 
 /// The listing of `sN FILE ANCHOR`: caption, then the code.
@@ -352,7 +375,32 @@ fn mark_gained(before: &str, after: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{captioned, mark_gained};
+    use super::{captioned, french_title, mark_gained};
+
+    /// The title is the first string of the `french` entry after the exercise's
+    /// own name, not a neighbour's, on one line or two, its escapes unescaped.
+    #[test]
+    fn an_exercise_is_named_by_its_own_french_title() {
+        let checks = r#"
+            name: "s1_1_first",
+            french: ["le premier", "séance 1, «\u{a0}Un\u{a0}»"],
+            name: "s1_2_second",
+            needs: &["s1.1"],
+            french: [
+                "le\u{a0}second",
+                "séance 1",
+            ],
+        "#;
+        assert_eq!(
+            french_title(checks, "s1_1_first").as_deref(),
+            Some("le premier")
+        );
+        assert_eq!(
+            french_title(checks, "s1_2_second").as_deref(),
+            Some("le\u{a0}second")
+        );
+        assert_eq!(french_title(checks, "s1_3_third"), None);
+    }
 
     #[test]
     fn an_image_alone_on_its_line_gets_a_visible_caption() {
