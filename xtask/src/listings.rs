@@ -132,7 +132,10 @@ fn fill(
 }
 
 /// `content` with each image alone on its line made a `<figure>` with a visible
-/// `<figcaption>` (outside code blocks).
+/// `<figcaption>` (outside code blocks). A small image can be shown larger with its
+/// pixels kept square: the title `"pixelated WIDTH"`, as in
+/// `![Figure 13: a mesh](figures/mesh.png "pixelated 384")`, shows it WIDTH pixels
+/// wide.
 fn captioned(content: &str) -> String {
     let mut fenced = false;
     let mut out = String::new();
@@ -141,10 +144,17 @@ fn captioned(content: &str) -> String {
             fenced = !fenced;
         }
         match image_line(line.trim()).filter(|_| !fenced) {
-            Some((text, source)) => {
+            Some(Image {
+                text,
+                source,
+                pixelated,
+            }) => {
                 let text = escape(text);
+                let size = pixelated.map_or(String::new(), |width| {
+                    format!(" width=\"{width}\" style=\"image-rendering: pixelated\"")
+                });
                 out += &format!(
-                    "\n<figure>\n<img src=\"{source}\" alt=\"{text}\">\n<figcaption>{text}</figcaption>\n</figure>\n\n"
+                    "\n<figure>\n<img src=\"{source}\" alt=\"{text}\"{size}>\n<figcaption>{text}</figcaption>\n</figure>\n\n"
                 );
             }
             None => out += line,
@@ -153,11 +163,33 @@ fn captioned(content: &str) -> String {
     out
 }
 
-/// The text and source of a line that is one Markdown image, `![text](source)`.
-fn image_line(line: &str) -> Option<(&str, &str)> {
+/// An image alone on its line: `![text](source)`, or `![text](source "pixelated
+/// WIDTH")`.
+struct Image<'a> {
+    /// Its text, the caption and the `alt` text.
+    text: &'a str,
+    /// Its file.
+    source: &'a str,
+    /// The width it is shown at, its pixels kept square, if its title asks.
+    pixelated: Option<u32>,
+}
+
+/// The image `line` is, if it is one image alone.
+fn image_line(line: &str) -> Option<Image<'_>> {
     let inner = line.strip_prefix("![")?.strip_suffix(')')?;
-    let (text, source) = inner.rsplit_once("](")?;
-    (!source.contains(' ')).then_some((text, source))
+    let (text, target) = inner.rsplit_once("](")?;
+    let (source, pixelated) = match target.split_once(' ') {
+        None => (target, None),
+        Some((source, title)) => {
+            let width = title.strip_prefix("\"pixelated ")?.strip_suffix('"')?;
+            (source, Some(width.parse().ok()?))
+        }
+    };
+    Some(Image {
+        text,
+        source,
+        pixelated,
+    })
 }
 
 /// Text made safe for HTML, inside an attribute or an element.
@@ -408,6 +440,16 @@ mod tests {
         let out = captioned(text);
         assert!(out.contains("<img src=\"figures/white-disk.png\" alt=\"Figure 1: a &lt;white&gt; disk\">\n<figcaption>Figure 1: a &lt;white&gt; disk</figcaption>"), "{out}");
         assert!(out.contains("```text\n![not](an image)\n```"));
+    }
+
+    /// The title `"pixelated WIDTH"` sets the width and keeps pixels square; any
+    /// other title leaves the line as it is.
+    #[test]
+    fn a_pixelated_image_is_shown_at_its_width() {
+        let out = captioned("![Figure 13: a mesh](figures/mesh.png \"pixelated 384\")\n");
+        assert!(out.contains("<img src=\"figures/mesh.png\" alt=\"Figure 13: a mesh\" width=\"384\" style=\"image-rendering: pixelated\">"), "{out}");
+        let other = "![a mesh](figures/mesh.png \"a title\")\n";
+        assert_eq!(captioned(other), other);
     }
 
     #[test]
