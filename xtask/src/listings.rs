@@ -12,6 +12,8 @@
 //! markers in the view's code (see [`crate::exercise`]) and their checklist lines
 //! from `tests/exercises/sN.rs`; the French edition names each exercise with the
 //! French title its checklist entry gives `cargo test -- --lang fr`.
+//! `{{#timings FILE}}` becomes the table `raycourse bench` printed into
+//! `book/src/FILE`, in French in the French edition ([`crate::timings`]).
 //!
 //! An image alone on its line, `![Figure 1: a white disk](figures/white-disk.png)`,
 //! becomes a figure whose text is shown under it as its caption (and kept as the
@@ -39,7 +41,11 @@ pub fn preprocess(root: &Path) -> Result<(), String> {
         &ENGLISH
     };
     let mut seen = HashSet::new();
-    walk(&mut book, &views, words, &mut seen)?;
+    let places = Places {
+        views,
+        src: root.join("book/src"),
+    };
+    walk(&mut book, &places, words, &mut seen)?;
     println!("{book}");
     Ok(())
 }
@@ -61,6 +67,8 @@ struct Words {
     /// Whether an exercise is named by its checklist entry's French title instead
     /// of its marker's English one.
     french_titles: bool,
+    /// A `bench` table as this edition shows it.
+    timings: fn(&str) -> String,
 }
 
 const ENGLISH: Words = Words {
@@ -71,6 +79,7 @@ const ENGLISH: Words = Words {
     header: "| exercise | what you write | function | file | checklist line |",
     and: " and ",
     french_titles: false,
+    timings: str::to_owned,
 };
 
 const FRENCH: Words = Words {
@@ -81,12 +90,21 @@ const FRENCH: Words = Words {
     header: "| exercice | ce que vous écrivez | fonction | fichier | ligne de la liste de contrôle |",
     and: " et ",
     french_titles: true,
+    timings: crate::timings::french,
 };
+
+/// Where the preprocessor reads what it fills in.
+struct Places {
+    /// The session views, `target/book-views/sN/`.
+    views: PathBuf,
+    /// The book's chapters, `book/src/`, beside which the `bench` tables are kept.
+    src: PathBuf,
+}
 
 /// Fills the listings of every chapter under `value`.
 fn walk(
     value: &mut Value,
-    views: &Path,
+    places: &Places,
     words: &Words,
     seen: &mut HashSet<String>,
 ) -> Result<(), String> {
@@ -95,22 +113,23 @@ fn walk(
             if let Some(Value::Object(chapter)) = map.get_mut("Chapter")
                 && let Some(Value::String(content)) = chapter.get_mut("content")
             {
-                *content = fill(content, views, words, seen)?;
+                *content = fill(content, places, words, seen)?;
             }
             map.values_mut()
-                .try_for_each(|v| walk(v, views, words, seen))
+                .try_for_each(|v| walk(v, places, words, seen))
         }
         Value::Array(items) => items
             .iter_mut()
-            .try_for_each(|v| walk(v, views, words, seen)),
+            .try_for_each(|v| walk(v, places, words, seen)),
         _ => Ok(()),
     }
 }
 
-/// `content` with each `{{#listing ...}}` replaced by its listing.
+/// `content` with each `{{#listing ...}}` replaced by its listing, each
+/// `{{#exercises ...}}` by its table and each `{{#timings ...}}` by its `bench` table.
 fn fill(
     content: &str,
-    views: &Path,
+    places: &Places,
     words: &Words,
     seen: &mut HashSet<String>,
 ) -> Result<String, String> {
@@ -125,10 +144,11 @@ fn fill(
         if !seen.insert(directive.trim().to_owned()) {
             return Err(format!("listing `{directive}` is shown twice in the book"));
         }
-        out += &listing(directive, views, words)?;
+        out += &listing(directive, &places.views, words)?;
         rest = &rest[start + end + 2..];
     }
-    Ok(captioned(&exercise_tables(&(out + rest), views, words)?))
+    let tables = exercise_tables(&(out + rest), &places.views, words)?;
+    Ok(captioned(&timing_tables(&tables, &places.src, words)?))
 }
 
 /// `content` with each image alone on its line made a `<figure>` with a visible
@@ -211,6 +231,25 @@ fn exercise_tables(content: &str, views: &Path, words: &Words) -> Result<String,
         out += &rest[..start];
         let session = rest[start + "{{#exercises ".len()..start + end].trim();
         out += &exercise_table(crate::session(session)?, views, words)?;
+        rest = &rest[start + end + 2..];
+    }
+    Ok(out + rest)
+}
+
+/// `content` with each `{{#timings FILE}}` replaced by the `bench` table kept in
+/// `src/FILE`, in the edition's language ([`crate::timings`]).
+fn timing_tables(content: &str, src: &Path, words: &Words) -> Result<String, String> {
+    let mut out = String::new();
+    let mut rest = content;
+    while let Some(start) = rest.find("{{#timings ") {
+        let end = rest[start..]
+            .find("}}")
+            .ok_or("a {{#timings ...}} is not closed")?;
+        out += &rest[..start];
+        let file = src.join(rest[start + "{{#timings ".len()..start + end].trim());
+        let table = std::fs::read_to_string(&file)
+            .map_err(|e| format!("the timings {}: {e}", file.display()))?;
+        out += &(words.timings)(&table);
         rest = &rest[start + end + 2..];
     }
     Ok(out + rest)

@@ -27,6 +27,7 @@ mod prune;
 mod serve;
 mod source;
 mod student;
+mod timings;
 mod view;
 
 use std::path::{Path, PathBuf};
