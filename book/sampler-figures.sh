@@ -16,3 +16,6 @@ for stage in antialiasing soft-shadows light-sampling depth-of-field textures; d
       --reference-spp 4096 --width 64 --height 64 --quiet --out "$out/$stage-$comparison"
   done
 done
+
+# The French edition's plots, from the same CSV files.
+book/french-plots.sh

@@ -44,3 +44,6 @@ cargo run --release --quiet -- plot "$out"/{double,double-fast,single,single-fas
   --out "$out/precision.png" \
   --title "antialiasing: both precisions, both engines, and Mitsuba 3"
 rm -f "$out"/{double,double-fast,single,single-fast}.png
+
+# The French edition's plots, from the same CSV files.
+book/french-plots.sh

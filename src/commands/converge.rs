@@ -22,6 +22,7 @@ use crate::commands::failure::Failure;
 use crate::commands::options::WorkArgs;
 use crate::commands::output::{progress_bar, write};
 use crate::commands::plot::plot_rungs;
+use raycourse::check::language::Language;
 
 /// Measure how fast a stage's error falls: render a reference (cached), then the
 /// sample counts 1, 2, 4, ... up to `--max-spp`, timing each and measuring its
@@ -283,7 +284,7 @@ fn report(
         ),
         None => format!("{}: error against samples and time", args.scene),
     };
-    match plot_rungs(&title, rungs) {
+    match plot_rungs(&title, rungs, Language::English) {
         Some(png) => {
             write(&out.with_extension("png"), &png)?;
             println!("  plot -> {}", out.with_extension("png").display());

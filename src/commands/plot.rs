@@ -8,6 +8,7 @@ use std::sync::Once;
 use clap::{ArgMatches, FromArgMatches, Parser};
 use plotters::prelude::*;
 use plotters::style::FontStyle;
+use raycourse::check::language::Language;
 use raycourse::maths::to_double;
 use raycourse::render::png::encode_rgb8;
 use raycourse::studies::convergence::{Rung, axis_label, read_rungs};
@@ -31,6 +32,11 @@ struct PlotArgs {
     /// The plot's title.
     #[arg(long, default_value = "")]
     title: String,
+    /// The language of the axes and the legend, `en` or `fr` (the variants' labels
+    /// translated word by word, numbers with a decimal comma), for the book's
+    /// French edition.
+    #[arg(long, value_parser = ["en", "fr"], default_value = "en")]
+    lang: String,
 }
 
 /// The `plot` command.
@@ -52,7 +58,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
             read_rungs(&text).map_err(|m| Failure::Input(format!("{}: {m}", path.display())))?;
         rungs.extend(rows);
     }
-    let png = plot_rungs(&args.title, &rungs)
+    let png = plot_rungs(&args.title, &rungs, Language::from_locale(&args.lang))
         .ok_or_else(|| Failure::Input("no row has an error above 0: nothing to plot".into()))?;
     write(&args.out, &png)?;
     println!("{} rows -> {}", rungs.len(), args.out.display());
@@ -78,15 +84,15 @@ fn register_font() {
 type Area<'a> = DrawingArea<BitMapBackend<'a>, plotters::coord::Shift>;
 
 /// One variant's points on a panel: its label and `(x, RMSE)` pairs.
-type Line<'a> = (&'a str, Vec<(f64, f64)>);
+type Line = (String, Vec<(f64, f64)>);
 
 // ANCHOR: plot
 /// A PNG of the rungs' RMSE against samples per pixel (left) and against seconds
 /// (right), both axes logarithmic, one line per variant in order of appearance, and
 /// a grey guide of slope -1/2, the rate of an unbiased Monte Carlo estimate. Rungs
 /// with no error (an exact image) have no logarithm and are left out; `None` when
-/// no rung is left.
-pub fn plot_rungs(title: &str, rungs: &[Rung]) -> Option<Vec<u8>> {
+/// no rung is left. Its words and numbers are in `language`.
+pub fn plot_rungs(title: &str, rungs: &[Rung], language: Language) -> Option<Vec<u8>> {
     let shown: Vec<&Rung> = rungs.iter().filter(|r| r.error.rmse > 0.0).collect();
     if shown.is_empty() {
         return None;
@@ -100,17 +106,30 @@ pub fn plot_rungs(title: &str, rungs: &[Rung]) -> Option<Vec<u8>> {
         root.fill(&WHITE).ok()?;
         let root = root.titled(title, ("sans-serif", 24)).ok()?;
         let (left, right) = root.split_horizontally(SIZE.0 / 2);
-        draw_panel(&left, &lines(&shown, &samples), "samples per pixel")?;
-        draw_panel(&right, &lines(&shown, &seconds), "seconds")?;
+        let samples_name = language.pick("samples per pixel", "échantillons par pixel");
+        let seconds_name = language.pick("seconds", "secondes");
+        draw_panel(
+            &left,
+            &lines(&shown, &samples, language),
+            samples_name,
+            language,
+        )?;
+        draw_panel(
+            &right,
+            &lines(&shown, &seconds, language),
+            seconds_name,
+            language,
+        )?;
         root.present().ok()?;
     }
     Some(encode_rgb8(&pixels, SIZE.0, SIZE.1))
 }
 // ANCHOR_END: plot
 
-/// The rungs as one line per variant, in order of appearance, with `x_of` as `x`.
-fn lines<'a>(shown: &[&'a Rung], x_of: &dyn Fn(&Rung) -> f64) -> Vec<Line<'a>> {
-    let mut lines: Vec<Line> = vec![];
+/// The rungs as one line per variant, in order of appearance, with `x_of` as `x`,
+/// each labelled in `language`.
+fn lines(shown: &[&Rung], x_of: &dyn Fn(&Rung) -> f64, language: Language) -> Vec<Line> {
+    let mut lines: Vec<(&str, Vec<(f64, f64)>)> = vec![];
     for rung in shown {
         let point = (x_of(rung), to_double(rung.error.rmse));
         match lines.iter_mut().find(|(label, _)| *label == rung.variant) {
@@ -119,6 +138,72 @@ fn lines<'a>(shown: &[&'a Rung], x_of: &dyn Fn(&Rung) -> f64) -> Vec<Line<'a>> {
         }
     }
     lines
+        .into_iter()
+        .map(|(label, points)| (variant_label(label, language), points))
+        .collect()
+}
+
+/// The English words of the studies' variant labels, with their French; the longer
+/// first where one holds another.
+const FRENCH_WORDS: &[(&str, &str)] = &[
+    ("bounces", "rebonds"),
+    ("bounce", "rebond"),
+    ("brute force", "force brute"),
+    ("bounding box", "boîte englobante"),
+    ("fast BVH", "BVH rapide"),
+    ("light sampling", "échantillonnage de la lumière"),
+    ("naive", "naïf"),
+    ("limit", "limite"),
+    ("leaf", "feuille"),
+    ("bilinear", "bilinéaire"),
+    ("nearest", "plus proche"),
+    ("single-fast", "simple, moteur rapide"),
+    ("double-fast", "double, moteur rapide"),
+    ("single", "simple"),
+    ("independent", "indépendant"),
+    ("stratified", "stratifié"),
+    ("sobol", "Sobol"),
+    ("adaptive", "adaptatif"),
+];
+
+/// A variant's label in `language`: in French, its words translated and its
+/// numbers with a decimal comma (`sobol + adaptive 0.05` reads `Sobol + adaptatif
+/// 0,05`); names such as `Mitsuba llvm_ad_rgb` are left as they are.
+fn variant_label(label: &str, language: Language) -> String {
+    match language {
+        Language::English => label.to_owned(),
+        Language::French => {
+            let words = FRENCH_WORDS
+                .iter()
+                .fold(label.to_owned(), |text, (english, french)| {
+                    text.replace(english, french)
+                });
+            decimal_commas(&words)
+        }
+    }
+}
+
+/// `text` as `language` writes its numbers: with a decimal comma in French.
+fn decimal_commas_in(language: Language, text: String) -> String {
+    match language {
+        Language::English => text,
+        Language::French => decimal_commas(&text),
+    }
+}
+
+/// `text` with a comma for each point between two digits.
+fn decimal_commas(text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    chars
+        .iter()
+        .enumerate()
+        .map(|(k, &c)| {
+            let between_digits = k > 0
+                && chars[k - 1].is_ascii_digit()
+                && chars.get(k + 1).is_some_and(char::is_ascii_digit);
+            if c == '.' && between_digits { ',' } else { c }
+        })
+        .collect()
 }
 
 /// The range of a logarithmic axis holding `values`, with some room around them.
@@ -129,8 +214,9 @@ fn axis(values: impl Iterator<Item = f64> + Clone) -> std::ops::Range<f64> {
 }
 
 /// Draws `lines` on `area`: log-log axes, a guide of slope -1/2 through the first
-/// line's first point, each line in its own colour, and the legend.
-fn draw_panel(area: &Area, lines: &[Line], x_name: &str) -> Option<()> {
+/// line's first point, each line in its own colour, and the legend, in `language`.
+fn draw_panel(area: &Area, lines: &[Line], x_name: &str, language: Language) -> Option<()> {
+    let tick = |v: &f64| decimal_commas_in(language, axis_label(*v));
     let points = || lines.iter().flat_map(|(_, p)| p.iter().copied());
     let (x_range, y_range) = (axis(points().map(|p| p.0)), axis(points().map(|p| p.1)));
     let mut chart = ChartBuilder::on(area)
@@ -141,10 +227,10 @@ fn draw_panel(area: &Area, lines: &[Line], x_name: &str) -> Option<()> {
         .ok()?;
     chart
         .configure_mesh()
-        .x_label_formatter(&|v| axis_label(*v))
-        .y_label_formatter(&|v| axis_label(*v))
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
         .x_desc(x_name)
-        .y_desc("RMSE (linear radiance)")
+        .y_desc(language.pick("RMSE (linear radiance)", "RMSE (luminance linéaire)"))
         .label_style(("sans-serif", 15))
         .draw()
         .ok()?;
@@ -154,14 +240,14 @@ fn draw_panel(area: &Area, lines: &[Line], x_name: &str) -> Option<()> {
     chart
         .draw_series(DashedLineSeries::new(guide, 6, 4, grey.stroke_width(1)))
         .ok()?
-        .label("slope -1/2")
+        .label(language.pick("slope -1/2", "pente -1/2"))
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], grey));
     for (i, (label, points)) in lines.iter().enumerate() {
         let colour = Palette99::pick(i).to_rgba();
         chart
             .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))
             .ok()?
-            .label(*label)
+            .label(label.as_str())
             .legend(move |(x, y)| {
                 PathElement::new(vec![(x, y), (x + 24, y)], colour.stroke_width(2))
             });
@@ -177,4 +263,37 @@ fn draw_panel(area: &Area, lines: &[Line], x_name: &str) -> Option<()> {
         .border_style(BLACK)
         .draw()
         .ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every variant label of the book's studies reads in French, words and
+    /// numbers, and in English as it is.
+    #[test]
+    fn variant_labels_read_in_french() {
+        let cases = [
+            ("1 bounce", "1 rebond"),
+            ("8 bounces", "8 rebonds"),
+            ("fast BVH", "BVH rapide"),
+            ("bounding box", "boîte englobante"),
+            ("limit 2 + roulette", "limite 2 + roulette"),
+            ("single-fast", "simple, moteur rapide"),
+            ("single", "simple"),
+            ("sobol + adaptive 0.05", "Sobol + adaptatif 0,05"),
+            ("Mitsuba llvm_ad_rgb", "Mitsuba llvm_ad_rgb"),
+        ];
+        for (english, french) in cases {
+            assert_eq!(variant_label(english, Language::French), french);
+            assert_eq!(variant_label(english, Language::English), english);
+        }
+    }
+
+    /// Only a point between two digits becomes a comma.
+    #[test]
+    fn decimal_points_between_digits_become_commas() {
+        assert_eq!(decimal_commas("0.05, 1e-3 and 2."), "0,05, 1e-3 and 2.");
+        assert_eq!(decimal_commas_in(Language::English, "0.01".into()), "0.01");
+    }
 }
