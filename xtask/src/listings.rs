@@ -13,7 +13,9 @@
 //! from `tests/exercises/sN.rs`; the French edition names each exercise with the
 //! French title its checklist entry gives `cargo test -- --lang fr`.
 //! `{{#timings FILE}}` becomes the table `raycourse bench` printed into
-//! `book/src/FILE`, in French in the French edition ([`crate::timings`]).
+//! `book/src/FILE`, in French in the French edition ([`crate::timings`]), and the
+//! entries between `{{#sorted}}` and `{{#sorted-end}}` are put in the order of their
+//! terms in the edition's language ([`crate::glossary`]).
 //!
 //! An image alone on its line, `![Figure 1: a white disk](figures/white-disk.png)`,
 //! becomes a figure whose text is shown under it as its caption (and kept as the
@@ -126,7 +128,8 @@ fn walk(
 }
 
 /// `content` with each `{{#listing ...}}` replaced by its listing, each
-/// `{{#exercises ...}}` by its table and each `{{#timings ...}}` by its `bench` table.
+/// `{{#exercises ...}}` by its table and each `{{#timings ...}}` by its `bench` table,
+/// and each `{{#sorted}}` block sorted.
 fn fill(
     content: &str,
     places: &Places,
@@ -148,7 +151,8 @@ fn fill(
         rest = &rest[start + end + 2..];
     }
     let tables = exercise_tables(&(out + rest), &places.views, words)?;
-    Ok(captioned(&timing_tables(&tables, &places.src, words)?))
+    let tables = timing_tables(&tables, &places.src, words)?;
+    Ok(captioned(&crate::glossary::sorted(&tables)?))
 }
 
 /// `content` with each image alone on its line made a `<figure>` with a visible

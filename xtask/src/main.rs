@@ -17,6 +17,7 @@ mod book;
 mod cfg;
 mod exercise;
 mod formulas;
+mod glossary;
 mod listings;
 mod manifest;
 // The exercises' markers are read as the checklist reads them, from its own file.
