@@ -88,13 +88,13 @@ impl Aabb {
             } else {
                 (self.min[axis], self.max[axis])
             };
-            let t1 = (first - ray.origin[axis]) * inv;
-            let t2 = (second - ray.origin[axis]) * inv * (1.0 + 2.0 * error_bound(3));
-            if t1 > near {
-                near = t1;
+            let enter = (first - ray.origin[axis]) * inv;
+            let leave = (second - ray.origin[axis]) * inv * (1.0 + 2.0 * error_bound(3));
+            if enter > near {
+                near = enter;
             }
-            if t2 < far {
-                far = t2;
+            if leave < far {
+                far = leave;
             }
             if near > far {
                 return None;

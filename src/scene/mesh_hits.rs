@@ -35,8 +35,8 @@ impl Scene {
 
     // ANCHOR: nearest_distance
     /// The distance to the nearest object, sphere or mesh, that `ray` hits and that
-    /// object's index: what [`Scene::intersect`] finds, without the hit record a
-    /// shadow ray has no use for.
+    /// object's index: what [`Scene::intersect`] finds, returned without the hit
+    /// record a shadow ray has no use for (a mesh's is still built, then dropped).
     pub fn nearest(&self, ray: &Ray) -> Option<(Real, usize)> {
         let nearest = self.nearest_sphere(ray);
         if let Some(hit) = self.nearest_mesh(ray, nearest.map_or(Real::INFINITY, |n| n.0)) {
