@@ -159,9 +159,10 @@ impl Mesh {
     // ANCHOR: hit_record
     /// The hit record of `hit`, for the mesh numbered `object` in the scene. The
     /// point is interpolated from the corners, `b_A P_A + b_B P_B + b_C P_C`, whose error
-    /// is at most `delta_7 (|b_A P_A| + |b_B P_B| + |b_C P_C|)` (pbrt-v4). The normal is
-    /// the triangle's own, `(P_B - P_A) x (P_C - P_A)` normalised, which also decides on which
-    /// side a new ray starts.
+    /// is at most `delta_7 (|b_A P_A| + |b_B P_B| + |b_C P_C|)` (pbrt-v4). The
+    /// geometric normal, the triangle's own `(P_B - P_A) x (P_C - P_A)` normalised,
+    /// decides on which side a new ray starts and whether the ray came from outside;
+    /// the shading normal, `normal`, starts as that same normal.
     pub fn hit_record(&self, ray: &Ray, hit: MeshHit, object: usize) -> Hit {
         let corners = self.corners(hit.triangle);
         let weights = [1.0 - hit.at.beta - hit.at.gamma, hit.at.beta, hit.at.gamma];
