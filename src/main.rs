@@ -23,11 +23,11 @@ use commands::{Verb, pipe, stage, verbs};
 fn command(verbs: &[Verb]) -> clap::Command {
     let about = "Ray tracing, one course session at a time. With no command, renders the \
                  last stage of this build into `out/` (the render options apply to it).";
-    let mut command = clap::Command::new("raycourse")
+    let command = clap::Command::new("raycourse")
         .version(env!("CARGO_PKG_VERSION"))
-        .about(about)
         .args_conflicts_with_subcommands(true);
-    command = RenderArgs::augment_args(command);
+    // After the render options, whose own doc comment would otherwise be the about.
+    let mut command = RenderArgs::augment_args(command).about(about);
     for session in 1..=SESSION {
         command = command.subcommand(stage::command(session));
     }

@@ -23,18 +23,20 @@ use crate::commands::output::write;
 
 /// Check an image of a stage made by your own renderer, in any language: render
 /// the stage's reference at the image's size (cached), compare, and say what
-/// differs, where, and the likely mistake. Exit code 0: it matches; 1: it differs;
-/// 2: bad input.
+/// differs, where, and the likely mistake. Exit code 0: it matches (with `--all`,
+/// every image found matches); 1: it differs (with `--all`, one differs or cannot
+/// be read); 2: bad input.
 #[derive(Parser)]
 #[command(name = "check")]
 struct CheckArgs {
-    /// The stage (see `list`).
+    /// The stage (see `list`); required without `--all`.
     #[arg(required_unless_present = "all", value_parser = PossibleValuesParser::new(stages().map(|s| s.name)))]
     stage: Option<String>,
-    /// Your image of it (PNG or JPEG, any size).
+    /// Your image of it (PNG or JPEG, any size); required without `--all`.
     #[arg(required_unless_present = "all")]
     image: Option<PathBuf>,
-    /// Grade a folder of images named after the stages (`glass.png`, ...): a table,
+    /// Grade a folder of images named after the stages (`glass.png`, `glass.jpg` or
+    /// `glass.jpeg`, ...): a table,
     /// and a CSV grading sheet; or a class, a folder of such folders (one per
     /// student): a row per student and a column per stage.
     #[arg(long, conflicts_with_all = ["stage", "image"])]

@@ -26,6 +26,25 @@ fn list_shows_exactly_the_stages_of_this_build() {
     );
 }
 
+/// The help begins with what the program is, not with the render options' own
+/// description, and says what it does without a command.
+#[test]
+fn the_help_says_what_the_program_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(&["--help"], dir.path());
+    assert!(out.status.success());
+    let stdout = text(&out.stdout);
+    let first = stdout.lines().next().unwrap();
+    assert!(
+        first.starts_with("Ray tracing, one course session at a time."),
+        "{first}"
+    );
+    assert!(
+        first.contains("With no command, renders the last stage"),
+        "{first}"
+    );
+}
+
 #[test]
 fn session_one_has_its_three_stages() {
     assert_eq!(
