@@ -13,8 +13,8 @@ use crate::camera::PixelFilter;
 // ANCHOR: camera
 /// A camera at `position`, looking down `-z` with `y` up, and the image it makes.
 /// Later sessions add fields (how rays are spread over a pixel, a lens, an aim);
-/// they start at their default, a pinhole looking down `-z`, so the struct is
-/// `non_exhaustive` and built with `..Default::default()`.
+/// they start at their default, a pinhole looking down `-z`, so the struct is built
+/// with `..Default::default()`, and `non_exhaustive` tells other crates so.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 #[non_exhaustive]
 pub struct Camera {

@@ -11,8 +11,8 @@ use crate::meshes::Mesh;
 
 // ANCHOR: scene
 /// A scene ready to render. Later sessions add fields (the meshes of session 5);
-/// they start empty, so the struct is `non_exhaustive` and built with
-/// `..Default::default()`.
+/// they start empty, so the struct is built with `..Default::default()`, and
+/// `non_exhaustive` tells other crates so.
 #[derive(Clone, Debug, Default)]
 #[non_exhaustive]
 pub struct Scene {
