@@ -136,21 +136,13 @@ fn fill(
     words: &Words,
     seen: &mut HashSet<String>,
 ) -> Result<String, String> {
-    let mut out = String::new();
-    let mut rest = content;
-    while let Some(start) = rest.find("{{#listing ") {
-        let end = rest[start..]
-            .find("}}")
-            .ok_or("a {{#listing ...}} is not closed")?;
-        out += &rest[..start];
-        let directive = &rest[start + "{{#listing ".len()..start + end];
-        if !seen.insert(directive.trim().to_owned()) {
+    let listings = crate::directive::replace(content, "listing", |directive| {
+        if !seen.insert(directive.to_owned()) {
             return Err(format!("listing `{directive}` is shown twice in the book"));
         }
-        out += &listing(directive, &places.views, words)?;
-        rest = &rest[start + end + 2..];
-    }
-    let tables = exercise_tables(&(out + rest), &places.views, words)?;
+        listing(directive, &places.views, words)
+    })?;
+    let tables = exercise_tables(&listings, &places.views, words)?;
     let tables = timing_tables(&tables, &places.src, words)?;
     Ok(captioned(&crate::glossary::sorted(&tables)?))
 }
@@ -226,37 +218,20 @@ fn escape(text: &str) -> String {
 
 /// `content` with each `{{#exercises sN}}` replaced by session N's table.
 fn exercise_tables(content: &str, views: &Path, words: &Words) -> Result<String, String> {
-    let mut out = String::new();
-    let mut rest = content;
-    while let Some(start) = rest.find("{{#exercises ") {
-        let end = rest[start..]
-            .find("}}")
-            .ok_or("an {{#exercises ...}} is not closed")?;
-        out += &rest[..start];
-        let session = rest[start + "{{#exercises ".len()..start + end].trim();
-        out += &exercise_table(crate::session(session)?, views, words)?;
-        rest = &rest[start + end + 2..];
-    }
-    Ok(out + rest)
+    crate::directive::replace(content, "exercises", |session| {
+        exercise_table(crate::session(session)?, views, words)
+    })
 }
 
 /// `content` with each `{{#timings FILE}}` replaced by the `bench` table kept in
 /// `src/FILE`, in the edition's language ([`crate::timings`]).
 fn timing_tables(content: &str, src: &Path, words: &Words) -> Result<String, String> {
-    let mut out = String::new();
-    let mut rest = content;
-    while let Some(start) = rest.find("{{#timings ") {
-        let end = rest[start..]
-            .find("}}")
-            .ok_or("a {{#timings ...}} is not closed")?;
-        out += &rest[..start];
-        let file = src.join(rest[start + "{{#timings ".len()..start + end].trim());
+    crate::directive::replace(content, "timings", |file| {
+        let file = src.join(file);
         let table = std::fs::read_to_string(&file)
             .map_err(|e| format!("the timings {}: {e}", file.display()))?;
-        out += &(words.timings)(&table);
-        rest = &rest[start + end + 2..];
-    }
-    Ok(out + rest)
+        Ok((words.timings)(&table))
+    })
 }
 
 /// The table of session `n`'s exercises: number, what it computes, the function
