@@ -39,10 +39,18 @@ struct AnimateArgs {
     options: RenderArgs,
 }
 
+/// The command line of `animate`: its own arguments and the render options, whose
+/// `--out` is here a GIF, or the first of numbered PNG frames.
+fn command() -> clap::Command {
+    <AnimateArgs as clap::CommandFactory>::command().mut_arg("out", |out| {
+        out.help("Output GIF (default: out/<stage>.gif), or numbered PNG frames if it ends in .png")
+    })
+}
+
 /// The `animate` command (session 7: the aimed camera).
 pub const VERB: Verb = Verb {
     rank: 5,
-    command: <AnimateArgs as clap::CommandFactory>::command,
+    command,
     run,
 };
 

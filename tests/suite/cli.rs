@@ -45,6 +45,20 @@ fn the_help_says_what_the_program_does() {
     );
 }
 
+/// `animate` writes a GIF by default, and its help says so rather than the render
+/// options' PNG.
+#[cfg(feature = "s7")]
+#[test]
+fn animate_s_help_gives_its_gif() {
+    let dir = tempfile::tempdir().unwrap();
+    let help = text(&run(&["animate", "--help"], dir.path()).stdout);
+    assert!(
+        help.contains("Output GIF (default: out/<stage>.gif)"),
+        "{help}"
+    );
+    assert!(!help.contains("Output PNG"), "{help}");
+}
+
 #[test]
 fn session_one_has_its_three_stages() {
     assert_eq!(
