@@ -28,6 +28,7 @@ use std::path::{Path, PathBuf};
 use image::{Rgb, RgbImage, imageops};
 use plotters::prelude::*;
 use plotters::style::FontStyle;
+use raycourse::check::language::Language;
 use raycourse::geometry::{Hit, Ray};
 use raycourse::inspect::aov::{Aov, see};
 use raycourse::lights::Light;
@@ -73,32 +74,22 @@ fn say(english: &str, french: &str) -> Label {
     }
 }
 
-/// The book's editions, each with the language of its figures' labels.
-#[derive(Clone, Copy)]
-enum Edition {
-    English,
-    French,
-}
-
-impl Edition {
-    /// This edition's text of `label`.
-    fn of(self, label: &Label) -> &str {
-        match self {
-            Edition::English => &label.english,
-            Edition::French => &label.french,
-        }
+impl Label {
+    /// This label in `language`.
+    fn in_language(&self, language: Language) -> &str {
+        language.pick(&self.english, &self.french)
     }
 }
 
 /// A figure: rows of labelled panels, the rows one above the other.
 type Figure = Vec<Vec<(Label, RgbImage)>>;
 
-/// `figure` with its labels in `edition`'s language: each row's panels side by
+/// `figure` with its labels in `language`: each row's panels side by
 /// side, each under its label, with a white gap between them.
-fn compose(figure: &Figure, edition: Edition) -> RgbImage {
+fn compose(figure: &Figure, language: Language) -> RgbImage {
     let rows: Vec<RgbImage> = figure
         .iter()
-        .map(|row| side_by_side(row, edition))
+        .map(|row| side_by_side(row, language))
         .collect();
     let mut out = RgbImage::from_pixel(
         rows[0].width(),
@@ -113,9 +104,9 @@ fn compose(figure: &Figure, edition: Edition) -> RgbImage {
     out
 }
 
-/// `panels` side by side, each under its label in `edition`'s language, with a
+/// `panels` side by side, each under its label in `language`, with a
 /// white gap between them.
-fn side_by_side(panels: &[(Label, RgbImage)], edition: Edition) -> RgbImage {
+fn side_by_side(panels: &[(Label, RgbImage)], language: Language) -> RgbImage {
     let (w, h) = panels[0].1.dimensions();
     let gap = 8;
     let width = panels.len() as u32 * (w + gap) - gap;
@@ -131,7 +122,7 @@ fn side_by_side(panels: &[(Label, RgbImage)], edition: Edition) -> RgbImage {
     let labels: Vec<(&str, u32)> = panels
         .iter()
         .enumerate()
-        .map(|(k, (label, _))| (edition.of(label), k as u32 * (w + gap)))
+        .map(|(k, (label, _))| (label.in_language(language), k as u32 * (w + gap)))
         .collect();
     label(&mut out, &labels);
     out
@@ -287,11 +278,11 @@ fn main() {
     ];
     std::fs::create_dir_all(out.join("fr")).expect("output folder");
     for (name, figure) in made {
-        for (edition, folder) in [
-            (Edition::English, out.clone()),
-            (Edition::French, out.join("fr")),
+        for (language, folder) in [
+            (Language::English, out.clone()),
+            (Language::French, out.join("fr")),
         ] {
-            let image = compose(&figure, edition);
+            let image = compose(&figure, language);
             let png =
                 raycourse::render::png::encode_rgb8(image.as_raw(), image.width(), image.height());
             std::fs::write(folder.join(name), png).expect("figure written");
