@@ -3,12 +3,12 @@
 
 use std::sync::Arc;
 
-use crate::geometry::hit::offset_along;
 use crate::geometry::{
     Aabb, Hit, Ray, ShearedRay, TriangleHit, TriangleTest, cost, intersect_triangle,
 };
 use crate::materials::Material;
 use crate::maths::{Colour, Real, Vec3, error_bound};
+use crate::meshes::clearance::{clearance, offset_clearing};
 
 #[cfg(feature = "s7")]
 use crate::materials::texture::Texture;
@@ -170,7 +170,9 @@ impl Mesh {
         let point = a + b + c;
         let error = error_bound(7) * (a.abs() + b.abs() + c.abs());
         let [a, b, c] = corners;
-        let geometric = (b - a).cross(c - a).normalize();
+        let area_normal = (b - a).cross(c - a);
+        let geometric = area_normal.normalize();
+        let clearance = clearance(corners, point, area_normal.length());
         let normal = geometric;
         #[cfg(feature = "s6")]
         let normal = self.smooth_normal(hit.triangle, weights, normal);
@@ -184,7 +186,7 @@ impl Mesh {
             point,
             normal,
             error,
-            offset: offset_along(geometric, error),
+            offset: offset_clearing(geometric, error, clearance),
             material: Material::Diffuse { albedo },
             emission: Colour::ZERO,
             object,

@@ -36,5 +36,8 @@ mod meshes;
 #[cfg(feature = "s6")]
 mod watertight;
 
+#[cfg(feature = "s6")]
+mod large_triangles;
+
 #[cfg(feature = "s7")]
 mod check;
