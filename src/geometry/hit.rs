@@ -19,7 +19,8 @@ pub struct Hit {
     /// point lies in the box `point ± error`.
     pub error: Vec3,
     /// How far a new ray leaving the point starts from it (session 2), along the
-    /// surface's own normal, outwards: just far enough to clear `error`.
+    /// surface's own normal, outwards: just far enough to clear `error` (on a
+    /// triangle, by the triangle's clearance too, session 5).
     pub offset: Vec3,
     /// What the surface is made of.
     pub material: Material,

@@ -7,7 +7,8 @@ impl Hit {
     // ANCHOR: spawn
     /// A ray leaving the hit point along the unit vector `direction`, its origin
     /// pushed off the surface to the side the ray leaves by, just far enough to
-    /// clear the point's rounding error ([`Hit::offset`]), then rounded one more
+    /// clear the point's rounding error (and on a triangle, the triangle test's:
+    /// [`Hit::offset`]), then rounded one more
     /// float away. The course pushes it by a fixed `epsilon` along the normal (see
     /// [`Hit::spawn_with_epsilon`]); an offset that follows the point's own error
     /// is never too small for a large scene nor too large for a small one.

@@ -78,12 +78,13 @@ impl ShearedRay {
     /// barycentric weights of `a`, `b` and `c` once divided by their sum (each is
     /// recomputed with its exact sign when it rounds to 0, so that two triangles
     /// sharing an edge decide it alike). The distance is
-    /// `t = (e0 a_z + e1 b_z + e2 c_z) s_z / (e0 + e1 + e2)`. A ray spawned from a
-    /// surface starts beyond the error bound of its hit point ([`crate::geometry::Hit::spawn`]),
-    /// so it cannot meet the triangle it left again; pbrt-v4 also refuses any `t`
-    /// below a bound on its own rounding error, but that bound grows without limit
-    /// for a triangle seen nearly edge-on, whose hits it would then refuse far from
-    /// the origin, and rays would slip through between its neighbours.
+    /// `t = (e0 a_z + e1 b_z + e2 c_z) s_z / (e0 + e1 + e2)`. pbrt-v4 refuses any `t`
+    /// below a bound on its own rounding error, so that a ray spawned from a
+    /// triangle cannot meet it again; but that bound grows without limit for a
+    /// triangle seen nearly edge-on, whose hits it would then refuse far from the
+    /// origin, and rays would slip through between its neighbours. Here the same
+    /// bound sets how far from the triangle's plane a spawned ray starts instead
+    /// (its clearance, `meshes::clearance`, added to [`crate::geometry::Hit::offset`]).
     #[inline]
     pub fn intersect(&self, a: Vec3, b: Vec3, c: Vec3, t_max: Real) -> Option<TriangleHit> {
         let (a, b, c) = (self.transform(a), self.transform(b), self.transform(c));

@@ -17,8 +17,9 @@ pub type Colour = Vec3;
 /// correctly rounded operation, the unit roundoff `u` of floating-point analysis.
 pub const UNIT_ROUNDOFF: Real = Real::EPSILON * 0.5;
 
-/// Higham's bound `delta_n = n u / (1 - n u)` on the relative error accumulated by
-/// `n` successive rounded operations; used to bound the error of a hit point.
+/// The bound `delta_n = n u / (1 - n u)` (Higham's `gamma_n`) on the relative error
+/// accumulated by `n` successive rounded operations; used to bound the error of a
+/// hit point.
 pub const fn error_bound(n: u32) -> Real {
     let nu = n as Real * UNIT_ROUNDOFF;
     nu / (1.0 - nu)

@@ -4,8 +4,9 @@
 use crate::maths::{Real, Vec3, error_bound};
 
 // ANCHOR: clearance
-/// The distance from the plane of the triangle `corners` at which a ray leaving the
-/// triangle's point `point` must start, so that the watertight test
+/// The distance from the plane of the triangle `corners`, beyond the hit point's own
+/// error, at which a ray leaving the triangle's point `point` along a unit direction
+/// must start, so that the watertight test
 /// ([`ShearedRay::intersect`](crate::geometry::ShearedRay::intersect)) cannot find
 /// the triangle again in front of it; `double_area` is `|(B - A) x (C - A)|`.
 ///
@@ -16,36 +17,43 @@ use crate::maths::{Real, Vec3, error_bound};
 /// bounds the error of that `t` (section 6.8.7) by
 /// `3 (delta_3 E Z + err(E) Z + err(Z) E) / |det|`, with, in the ray's sheared frame,
 /// `Z` the corners' largest `|z|`, `E` the largest edge function, `err(E)` and
-/// `err(Z)` their errors, and `det` the sum of the edge functions. With `reach` the
+/// `err(Z)` their errors, and `det` the sum of the edge functions. With `extent` the
 /// corners' largest coordinate difference from `point`, the sheared corners have
-/// `|x|, |y| <= 2 reach` and `|z| <= sqrt(3) reach`; a ray through the triangle has
-/// `E <= |det|`; and `|det| >= 2 area cos(theta)`, with `theta` the ray's angle to
-/// the normal. A ray starting at a distance `zeta` from the plane meets it at
-/// `t = -zeta / cos(theta)`, behind its start, and stays behind it by more than the
-/// error, whatever `theta`, once
+/// `|x|, |y| <= 2 extent` and `|z| <= sqrt(3) extent`; a ray through the triangle
+/// has `E <= |det|`; and `|det| >= 2 area cos(theta)`, with `theta` the ray's angle
+/// to the normal. The error of `t` is then at most
+/// `3 sqrt(3) extent (2 delta_3 + (4 delta_2 + 15 delta_5) extent^2 / (area cos(theta)))`,
+/// which is at most `zeta / cos(theta)` (as `cos(theta) <= 1`) for
 ///
-/// `zeta = 3 sqrt(3) reach (2 delta_3 + (4 delta_2 + 15 delta_5) reach^2 / area)`.
+/// `zeta = 3 sqrt(3) extent (2 delta_3 + (4 delta_2 + 15 delta_5) extent^2 / area)`;
 ///
-/// Only a sliver (a small area for its reach) needs much: `zeta` is capped at the
-/// reach, which also stands for a triangle of no area.
+/// and a ray starting `zeta` from the plane meets it at `t = -zeta / cos(theta)`,
+/// behind its start, whatever `theta`. The bound is to first order, as pbrt's.
+///
+/// Only a sliver (a small area for its extent) needs much: `zeta` is capped at the
+/// extent, which also stands for a triangle of no area, and where the guarantee no
+/// longer holds. It is the hit triangle's own: a coplanar neighbour sliver whose
+/// error is far larger can still be met again by a ray leaving near their shared
+/// edge (`tests/suite/large_triangles.rs` shows it).
 pub fn clearance(corners: [Vec3; 3], point: Vec3, double_area: Real) -> Real {
-    let reach = corners
+    let extent = corners
         .iter()
         .map(|&corner| (corner - point).abs().max_element())
         .fold(0.0, Real::max);
-    let shape = reach * reach / (0.5 * double_area);
+    let shape = extent * extent / (0.5 * double_area);
     let zeta = 3.0
         * Real::sqrt(3.0)
-        * reach
+        * extent
         * (2.0 * error_bound(3) + (4.0 * error_bound(2) + 15.0 * error_bound(5)) * shape);
-    zeta.min(reach)
+    zeta.min(extent)
 }
 
-/// [`offset_along`](crate::geometry::hit::offset_along) lengthened to `clearance`
-/// where it is shorter: the offset of a ray leaving a triangle, which must clear both
-/// the hit point's rounding `error` and the triangle test's own ([`clearance`]).
+/// [`offset_along`](crate::geometry::hit::offset_along) lengthened by `clearance`:
+/// the offset of a ray leaving a triangle. The point may lie `|N| . error` on the
+/// wrong side of the plane, so the new ray starts at least `clearance` from the plane
+/// only if it moves by both.
 pub fn offset_clearing(normal: Vec3, error: Vec3, clearance: Real) -> Vec3 {
-    normal.abs().dot(error).max(clearance) * normal
+    (normal.abs().dot(error) + clearance) * normal
 }
 // ANCHOR_END: clearance
 
@@ -75,10 +83,10 @@ mod tests {
     }
 
     #[test]
-    fn is_never_more_than_the_triangle_s_reach_nor_nan() {
+    fn is_never_more_than_the_triangle_s_extent_nor_nan() {
         let (corners, point) = ground();
-        let reach = 200.0 * 2.0 / 3.0;
-        assert_eq!(clearance(corners, point, 0.0), reach);
+        let extent = 200.0 * 2.0 / 3.0;
+        assert_eq!(clearance(corners, point, 0.0), extent);
         let point_triangle = [point; 3];
         assert_eq!(clearance(point_triangle, point, 0.0), 0.0);
     }

@@ -36,7 +36,7 @@ mod meshes;
 #[cfg(feature = "s6")]
 mod watertight;
 
-#[cfg(feature = "s6")]
+#[cfg(feature = "s5")]
 mod large_triangles;
 
 #[cfg(feature = "s7")]
