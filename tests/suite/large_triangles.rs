@@ -208,7 +208,8 @@ fn the_point_s_error_alone_is_not_enough() {
 /// The limit: the clearance is the hit triangle's own. A small triangle beside a
 /// coplanar sliver (1,000 long, 0.01 wide at its far end) that shares its edge gives
 /// rays leaving the small one near that edge, into it, at grazing angles, a start
-/// within the sliver's far larger error, and some meet the sliver again.
+/// within the sliver's far larger error, and some meet the sliver again. In single
+/// precision none of these rays does, so only the bound on how many is asserted there.
 #[test]
 fn a_sliver_beside_a_small_triangle_is_the_limit() {
     let data = ObjData {
@@ -250,5 +251,9 @@ fn a_sliver_beside_a_small_triangle_is_the_limit() {
     };
     let rays = 20_000;
     let again: u64 = (0..rays).into_par_iter().map(again).sum();
-    assert!(again > 0 && again < rays / 20, "{again} of {rays}");
+    let double = cfg!(not(feature = "f32"));
+    assert!(
+        (again > 0 || !double) && again < rays / 20,
+        "{again} of {rays}"
+    );
 }
