@@ -61,9 +61,10 @@ impl Grade {
     }
 }
 
-/// The image of `stage` in `dir`: `glass.png`, `glass.jpg` or `glass.jpeg`.
+/// The image of `stage` in `dir`: `glass.png`, `glass.jpg`, `glass.jpeg` or
+/// `glass.ppm`, the first that exists.
 pub fn image_of(dir: &Path, stage: &Stage) -> Option<PathBuf> {
-    ["png", "jpg", "jpeg"]
+    ["png", "jpg", "jpeg", "ppm"]
         .iter()
         .map(|e| dir.join(format!("{}.{e}", stage.name)))
         .find(|p| p.exists())

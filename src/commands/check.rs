@@ -32,12 +32,11 @@ struct CheckArgs {
     /// The stage (see `list`); required without `--all`.
     #[arg(required_unless_present = "all", value_parser = PossibleValuesParser::new(stages().map(|s| s.name)))]
     stage: Option<String>,
-    /// Your image of it (PNG or JPEG, any size); required without `--all`.
+    /// Your image of it (PNG, JPEG or PPM, any size); required without `--all`.
     #[arg(required_unless_present = "all")]
     image: Option<PathBuf>,
-    /// Grade a folder of images named after the stages (`glass.png`, `glass.jpg` or
-    /// `glass.jpeg`, ...): a table,
-    /// and a CSV grading sheet; or a class, a folder of such folders (one per
+    /// Grade a folder of images named after the stages (`glass.png`, `glass.jpg`,
+    /// `glass.jpeg` or `glass.ppm`, ...): a table, and a CSV grading sheet; or a class, a folder of such folders (one per
     /// student): a row per student and a column per stage.
     #[arg(long, conflicts_with_all = ["stage", "image"])]
     all: Option<PathBuf>,
@@ -116,7 +115,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
 fn read_image(path: &Path) -> Result<RgbImage, Failure> {
     let image = image::open(path).map_err(|e| {
         Failure::Input(format!(
-            "{}: not a PNG or JPEG image that can be read: {e}",
+            "{}: not a PNG, JPEG or PPM image that can be read: {e}",
             path.display()
         ))
     })?;

@@ -7,7 +7,8 @@ use std::num::NonZeroU32;
 use std::path::{Path, PathBuf};
 
 use crate::common::{run, run_in_locale, text};
-use image::RgbImage;
+use image::codecs::pnm::{PnmEncoder, PnmSubtype, SampleEncoding};
+use image::{ExtendedColorType, ImageEncoder, RgbImage};
 use raycourse::check::expected::{Renderer, Source};
 use raycourse::check::report::{Report, Verdict, check};
 use raycourse::geometry::Ray;
@@ -571,6 +572,59 @@ fn the_command_answers_with_its_exit_code_and_grades_a_folder() {
             .starts_with("stage,session,figure,verdict")
     );
     grades_a_class(&dir, &check);
+}
+
+/// `image` as a plain PPM (`P3`), the text a renderer in C++ writes by hand: a
+/// header, a comment, then each pixel's three levels.
+fn plain_ppm(image: &RgbImage) -> String {
+    let (width, height) = image.dimensions();
+    let mut text = format!("P3\n# written by hand\n{width} {height}\n255\n");
+    for pixel in image.pixels() {
+        let [r, g, b] = pixel.0;
+        text.push_str(&format!("{r} {g} {b}\n"));
+    }
+    text
+}
+
+/// A PPM, plain (`P3`) or binary (`P6`), is read like a PNG: a right one matches, a
+/// wrong one differs, and `--all` finds `STAGE.ppm`.
+#[test]
+fn ppm_images_are_checked_like_png_ones() {
+    let dir = tempfile::tempdir().unwrap();
+    let cache = cache();
+    let glass = picture(&scene(stage("glass"), &same, 0, None));
+    std::fs::write(dir.path().join("plain.ppm"), plain_ppm(&glass)).unwrap();
+    let mut binary = vec![];
+    let pixmap = PnmSubtype::Pixmap(SampleEncoding::Binary);
+    PnmEncoder::new(&mut binary)
+        .with_subtype(pixmap)
+        .write_image(glass.as_raw(), SIZE, SIZE, ExtendedColorType::Rgb8)
+        .unwrap();
+    assert!(binary.starts_with(b"P6"));
+    std::fs::write(dir.path().join("binary.ppm"), binary).unwrap();
+    let dark = scene(stage("glass"), &|t| t.replace("gamma = 2.2\n", ""), 0, None);
+    std::fs::write(dir.path().join("dark.ppm"), plain_ppm(&picture(&dark))).unwrap();
+    let check = |args: &[&str]| check_in(dir.path(), &cache, args);
+    for file in ["plain.ppm", "binary.ppm"] {
+        let right = check(&["glass", file]);
+        assert_eq!(
+            right.status.code(),
+            Some(0),
+            "{file}: {}",
+            text(&right.stdout)
+        );
+    }
+    let wrong = check(&["glass", "dark.ppm"]);
+    assert_eq!(wrong.status.code(), Some(1), "{}", text(&wrong.stdout));
+    std::fs::rename(dir.path().join("plain.ppm"), dir.path().join("glass.ppm")).unwrap();
+    let graded = check(&["--all", "."]);
+    let table = text(&graded.stdout);
+    assert!(
+        table
+            .lines()
+            .any(|l| l.starts_with("glass") && l.contains("matches")),
+        "{table}"
+    );
 }
 
 /// `check` speaks French where the locale is French, and `--lang` overrides the

@@ -46,7 +46,7 @@ extern "C" {
     fn report_progress(rows: f64);
 }
 
-/// Checks the image in `file` (a PNG or JPEG file's bytes) against the stage called
+/// Checks the image in `file` (a PNG, JPEG or PPM file's bytes) against the stage called
 /// `stage`, as `raycourse check STAGE IMAGE --lang LANGUAGE` does (`en` or `fr`),
 /// telling the worker's `raycourseProgress` how many rows of the reference are
 /// rendered.
@@ -71,8 +71,8 @@ pub fn checked(
     let image = image::load_from_memory(file)
         .map_err(|e| {
             let what = language.pick(
-                "not a PNG or JPEG image that can be read",
-                "ce n'est pas une image PNG ou JPEG lisible",
+                "not a PNG, JPEG or PPM image that can be read",
+                "ce n'est pas une image PNG, JPEG ou PPM lisible",
             );
             format!("{what}: {e}")
         })?
@@ -98,4 +98,45 @@ pub fn checked(
             picture.height(),
         ),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use raycourse::Overrides;
+    use raycourse::maths::Real;
+    use std::num::NonZeroU32;
+
+    /// The stage `name`'s image at `size` x `size` as a plain PPM (`P3`), the text a
+    /// renderer in C++ writes by hand, with `gamma` for the display.
+    fn plain_ppm(name: &str, size: u32, gamma: Option<Real>) -> Vec<u8> {
+        let stage = raycourse::stages().find(|s| s.name == name).unwrap();
+        let overrides = Overrides {
+            width: NonZeroU32::new(size),
+            height: NonZeroU32::new(size),
+            ..Overrides::default()
+        };
+        let scene = stage.scene_from(&overrides, assets::stage_files()).unwrap();
+        let gamma = gamma.unwrap_or(scene.settings.gamma);
+        let rgb = raycourse::render(&scene).film.to_rgb8(gamma);
+        let mut text = format!("P3\n# written by hand\n{size} {size}\n255\n");
+        for pixel in rgb.chunks(3) {
+            text.push_str(&format!("{} {} {}\n", pixel[0], pixel[1], pixel[2]));
+        }
+        text.into_bytes()
+    }
+
+    /// The page reads a PPM as the command does: the right image matches, one
+    /// without gamma differs, and a file that is not an image is refused by name.
+    #[test]
+    fn the_page_checks_a_ppm_written_by_hand() {
+        let check = |file: &[u8]| checked("glass", file, Language::English, &|_| {});
+        assert!(check(&plain_ppm("glass", 32, None)).unwrap().matches());
+        assert!(!check(&plain_ppm("glass", 32, Some(1.0))).unwrap().matches());
+        let refused = check(b"P3\nnot a picture").err().unwrap();
+        assert!(
+            refused.contains("not a PNG, JPEG or PPM image"),
+            "{refused}"
+        );
+    }
 }

@@ -7,8 +7,9 @@
 //
 // Each session chapter's demo renders its first stage at a small size; the pixels
 // read back from its canvas must pass `raycourse check` for that stage, and moving a
-// control must change them. The check page must pass a correct image, fail a
-// gamma-less one with the gamma hint, and refuse a file that is not an image. The
+// control must change them. The check page must pass a correct image (a PNG, and a
+// PPM written by hand), fail a gamma-less one with the gamma hint, and refuse a file
+// that is not an image. The
 // French book's demo must speak French, and each page link to the other language's.
 // A page that throws, logs an error or loads anything from the network fails its
 // test.
@@ -220,6 +221,27 @@ async function french(browser, base) {
   });
 }
 
+/** The PNG at `file` as a plain PPM (`P3`), the text a renderer in C++ writes by
+ * hand: its pixels read back from a canvas in the browser. */
+async function plainPpm(browser, file) {
+  const page = await browser.newPage();
+  const text = await page.evaluate(async (png) => {
+    const image = new Image();
+    image.src = `data:image/png;base64,${png}`;
+    await image.decode();
+    const canvas = document.createElement("canvas");
+    [canvas.width, canvas.height] = [image.width, image.height];
+    const context = canvas.getContext("2d");
+    context.drawImage(image, 0, 0);
+    const data = context.getImageData(0, 0, image.width, image.height).data;
+    const lines = [`P3`, `# written by hand`, `${image.width} ${image.height}`, `255`];
+    for (let i = 0; i < data.length; i += 4) lines.push(`${data[i]} ${data[i + 1]} ${data[i + 2]}`);
+    return lines.join("\n") + "\n";
+  }, fs.readFileSync(file).toString("base64"));
+  await page.close();
+  return text;
+}
+
 /** The check page with a file: its verdict and report. */
 async function checkPage(browser, base, stage, file) {
   const page = await open(browser, `${base}check.html`);
@@ -250,6 +272,14 @@ async function checks(browser, base) {
     assert(answer.report.trim() === said, `the page says\n${answer.report}\nthe command says\n${said}`);
     assert(answer.errors.length === 0, `the page reported errors: ${answer.errors.join("; ")}`);
   });
+  await test("the check page reads a PPM written by hand (P3), as the command does", async () => {
+    const ppm = path.join(scratch, "shading.ppm");
+    fs.writeFileSync(ppm, await plainPpm(browser, good));
+    const answer = await checkPage(browser, base, "shading", ppm);
+    assert(answer.state === "matches", `the page says: ${answer.report}`);
+    const said = command("check", "shading", ppm, "--quiet", "--cache", path.join(scratch, "cache")).output.trim();
+    assert(answer.report.trim() === said, `the page says\n${answer.report}\nthe command says\n${said}`);
+  });
   await test("the check page fails a gamma-less image with the gamma hint", async () => {
     const scene = path.join(scratch, "no-gamma.toml");
     fs.writeFileSync(scene, fs.readFileSync(path.join(root, "sessions/s2/gamma.toml"), "utf8").replace(/^gamma = 2\.2$/m, ""));
@@ -264,7 +294,7 @@ async function checks(browser, base) {
     fs.writeFileSync(text, "not a picture");
     const answer = await checkPage(browser, base, "shading", text);
     assert(answer.state === "error", `the page says: ${answer.state}: ${answer.report}`);
-    assert(/not a PNG or JPEG/.test(answer.report), `the page says: ${answer.report}`);
+    assert(/not a PNG, JPEG or PPM/.test(answer.report), `the page says: ${answer.report}`);
   });
 }
 

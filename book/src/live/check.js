@@ -1,5 +1,5 @@
 // The check page: `<div class="live-check">` becomes `raycourse check` in the page.
-// A student picks the stage and their image (PNG or JPEG, any size); a worker renders
+// A student picks the stage and their image (PNG, JPEG or PPM, any size); a worker renders
 // the stage's reference at that size with the crate itself and says what the command
 // says: the verdict, the brightness ratio, where the image differs and the hint, with
 // the picture of the differences. The image never leaves the page.
@@ -31,7 +31,7 @@
     build(stages) {
       this.stage = element("select", { className: "live-stage" },
         ...stages.map((s) => element("option", { value: s.name, textContent: `${say("session")} ${s.session}${french ? "\u00a0" : ""}: ${s.name}` })));
-      this.file = element("input", { type: "file", accept: "image/png,image/jpeg" });
+      this.file = element("input", { type: "file", accept: "image/png,image/jpeg,.ppm" });
       this.button = element("button", { textContent: say("check"), onclick: () => this.check() });
       this.progress = element("progress", { hidden: true });
       this.status = element("p", { className: "live-status" });
@@ -46,7 +46,7 @@
 
     async check() {
       const file = this.file.files[0];
-      if (!file) return this.fail(say("choose your image first (a PNG or JPEG file)"));
+      if (!file) return this.fail(say("choose your image first (a PNG, JPEG or PPM file)"));
       this.job += 1;
       this.root.dataset.state = "checking";
       this.report.textContent = "";

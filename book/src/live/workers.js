@@ -83,7 +83,7 @@
     "rows": "lignes",
     "matches": "correspond",
     "differs": "diffère",
-    "choose your image first (a PNG or JPEG file)": "choisissez d'abord votre image (un fichier PNG ou JPEG)",
+    "choose your image first (a PNG, JPEG or PPM file)": "choisissez d'abord votre image (un fichier PNG, JPEG ou PPM)",
     "the differences: differing pixels or blocks in red": "les différences : pixels ou blocs différents en rouge",
     "the live demo": "la démo interactive",
     "the check": "la vérification",
