@@ -13,9 +13,9 @@
 
 use raycourse::geometry::hit::offset_along;
 use raycourse::geometry::{Hit, Ray, TriangleTest};
-use raycourse::maths::{Mat3, Real, Vec3, pixel_rng, uniform};
+use raycourse::maths::{Mat3, PixelRng, Real, Vec3, pixel_rng, uniform};
 use raycourse::meshes::clearance::clearance;
-use raycourse::meshes::{Mesh, ObjData, Placement};
+use raycourse::meshes::{Mesh, MeshHit, ObjData, Placement};
 use rayon::prelude::*;
 
 /// A rectangle of `2 half_width` by `2 half_depth` around the `y` axis, two
@@ -82,22 +82,29 @@ fn leaving(hit: &Hit, heading: Vec3, angle: Real, outwards: bool) -> Vec3 {
     (heading * angle.cos() + hit.normal * (side * angle.sin())).normalize()
 }
 
+/// A random point of `quad` (within 1% of its edges), hit by a ray from above: the
+/// search's hit and its record, its normal facing the ray.
+fn hit_from_above(mesh: &Mesh, quad: Quad, rng: &mut PixelRng) -> Option<(MeshHit, Hit)> {
+    let mut u = || 2.0 * uniform(rng) - 1.0;
+    let target = quad.at(0.99 * quad.half_width * u(), 0.99 * quad.half_depth * u());
+    let ray = Ray::new(
+        target + Vec3::new(3.0, 10.0, 2.0),
+        Vec3::new(-3.0, -10.0, -2.0),
+    );
+    let found = mesh.intersect(&ray, Real::INFINITY)?;
+    Some((found, mesh.hit_record(&ray, found, 0).facing_the_ray()))
+}
+
 /// From random points of `quad` (hit by rays from above), a ray at each angle of
 /// `ANGLES` and on each side, spawned by `spawn`: how many meet the mesh again,
 /// anywhere (a plane is crossed once).
 fn surface_hits(mesh: &Mesh, quad: Quad, spawn: impl Fn(&Hit, Vec3) -> Ray + Sync) -> u64 {
     let again = |i: u64| -> u64 {
         let mut rng = pixel_rng(17, i);
-        let mut u = || 2.0 * uniform(&mut rng) - 1.0;
-        let target = quad.at(0.99 * quad.half_width * u(), 0.99 * quad.half_depth * u());
-        let ray = Ray::new(
-            target + Vec3::new(3.0, 10.0, 2.0),
-            Vec3::new(-3.0, -10.0, -2.0),
-        );
-        let Some(found) = mesh.intersect(&ray, Real::INFINITY) else {
+        let Some((_, hit)) = hit_from_above(mesh, quad, &mut rng) else {
             return 0;
         };
-        let hit = mesh.hit_record(&ray, found, 0).facing_the_ray();
+        let mut u = || 2.0 * uniform(&mut rng) - 1.0;
         let phi = 3.0 * u();
         let heading = (hit.normal.cross(Vec3::X) * phi.cos() + Vec3::X * phi.sin()).normalize();
         let angle = ANGLES[i as usize % ANGLES.len()].to_radians();
@@ -171,15 +178,7 @@ fn every_new_ray_starts_at_least_the_clearance_from_the_plane() {
     for quad in [GROUND, lifted] {
         let mesh = mesh(&quad.data(), TriangleTest::Watertight);
         let shortfalls = (0..SURVEYED).into_par_iter().filter(|&i| {
-            let mut rng = pixel_rng(23, i);
-            let mut u = || 2.0 * uniform(&mut rng) - 1.0;
-            let target = quad.at(0.99 * quad.half_width * u(), 0.99 * quad.half_depth * u());
-            let ray = Ray::new(
-                target + Vec3::new(3.0, 10.0, 2.0),
-                Vec3::new(-3.0, -10.0, -2.0),
-            );
-            let found = mesh.intersect(&ray, Real::INFINITY).unwrap();
-            let hit = mesh.hit_record(&ray, found, 0).facing_the_ray();
+            let (found, hit) = hit_from_above(&mesh, quad, &mut pixel_rng(23, i)).unwrap();
             let [a, b, c] = mesh.corners(found.triangle);
             let zeta = clearance([a, b, c], hit.point, (b - a).cross(c - a).length());
             let outwards = i.is_multiple_of(2);

@@ -103,22 +103,13 @@ pub fn checked(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use raycourse::Overrides;
+    use crate::command_line::command_line_render;
     use raycourse::maths::Real;
-    use std::num::NonZeroU32;
 
     /// The stage `name`'s image at `size` x `size` as a plain PPM (`P3`), the text a
     /// renderer in C++ writes by hand, with `gamma` for the display.
     fn plain_ppm(name: &str, size: u32, gamma: Option<Real>) -> Vec<u8> {
-        let stage = raycourse::stages().find(|s| s.name == name).unwrap();
-        let overrides = Overrides {
-            width: NonZeroU32::new(size),
-            height: NonZeroU32::new(size),
-            ..Overrides::default()
-        };
-        let scene = stage.scene_from(&overrides, assets::stage_files()).unwrap();
-        let gamma = gamma.unwrap_or(scene.settings.gamma);
-        let rgb = raycourse::render(&scene).film.to_rgb8(gamma);
+        let rgb = command_line_render(name, size, gamma);
         let mut text = format!("P3\n# written by hand\n{size} {size}\n255\n");
         for pixel in rgb.chunks(3) {
             text.push_str(&format!("{} {} {}\n", pixel[0], pixel[1], pixel[2]));

@@ -166,18 +166,7 @@ pub fn scene(
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The PNG's bytes of the command line's render, without its alpha.
-    fn command_line_render(name: &str, size: u32) -> Vec<u8> {
-        let stage = raycourse::stages().find(|s| s.name == name).unwrap();
-        let overrides = Overrides {
-            width: NonZeroU32::new(size),
-            height: NonZeroU32::new(size),
-            ..Overrides::default()
-        };
-        let scene = stage.scene_from(&overrides, assets::stage_files()).unwrap();
-        raycourse::render(&scene).film.to_rgb8(scene.settings.gamma)
-    }
+    use crate::command_line::command_line_render;
 
     #[test]
     fn rows_in_bands_make_the_command_lines_image_with_either_engine() {
@@ -202,7 +191,7 @@ mod tests {
                     [p[0], p[1], p[2]]
                 })
                 .collect();
-            assert_eq!(rgb, command_line_render(name, 24), "{name}");
+            assert_eq!(rgb, command_line_render(name, 24, None), "{name}");
             assert!(demo.rays() >= 24.0 * 24.0, "{name}: {} rays", demo.rays());
         }
     }

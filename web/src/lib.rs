@@ -14,9 +14,12 @@
 //! | [`demo`] | a stage rendered row by row, and its cost image |
 //! | [`functions`] | the course functions a scene's render runs |
 //! | [`checking`] | `check` on a student's image |
+//! | `command_line` | for the tests: a stage as the command line renders it |
 
 pub mod assets;
 pub mod checking;
+#[cfg(test)]
+mod command_line;
 pub mod demo;
 pub mod edits;
 pub mod functions;
