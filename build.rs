@@ -4,7 +4,9 @@
 //! no session features, the highest `sessions/sN` folder it holds. And, as
 //! `RAYCOURSE_MADE`, what the crate is: the course's crate (`features`), a session
 //! view (`view`) or a student's exercise crate (`exercises`, marked so in its
-//! `Cargo.toml`), so that a message about a later session reads right in each.
+//! `Cargo.toml`), so that a message about a later session reads right in each;
+//! an exercise crate also gets the cfg `course_answers`, under which its checklist
+//! takes the course's answers from its dev-dependency `course`.
 //! It also writes the list of the course's stages (`stages.rs` in `OUT_DIR`), one
 //! for each scene file of `sessions/sN/`, from the file's `[stage]` table.
 
@@ -35,6 +37,12 @@ fn main() {
     write_stages();
     println!("cargo::rustc-env=RAYCOURSE_SESSION={session}");
     println!("cargo::rustc-env=RAYCOURSE_MADE={made}");
+    // In an exercise crate the checklist compares the student's functions with the
+    // course's, a dev-dependency named `course`; elsewhere the crate is the course.
+    println!("cargo::rustc-check-cfg=cfg(course_answers)");
+    if made == "exercises" {
+        println!("cargo::rustc-cfg=course_answers");
+    }
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=Cargo.toml");
     println!("cargo::rerun-if-changed=sessions");

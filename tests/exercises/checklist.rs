@@ -96,6 +96,8 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
             stage_next = stage_next.or(differing);
         }
     }
+    let (mistakes_passed, mistakes_failed) = check_mistakes(sessions.len() as u32, &chosen);
+    (passed, failed) = (passed + mistakes_passed, failed + mistakes_failed);
     if !unmarked.is_empty() {
         println!("markers ... FAILED\n    {unmarked}");
         failed += 1;
@@ -289,11 +291,49 @@ pub fn run_line(sessions: &[&[Exercise]], name: &str) -> ExitCode {
         Some(exercise) => caught(exercise.check),
         None => match stages().find(|s| images::check_name(s) == name) {
             Some(stage) => caught(|| images::check(stage)),
-            None => return ExitCode::from(2),
+            None => match mistakes_session(name) {
+                Some(session) => caught(|| crate::mistakes::check_session(session)),
+                None => return ExitCode::from(2),
+            },
         },
     };
     println!("{}", isolation::encode(&verdict));
     ExitCode::SUCCESS
+}
+
+/// The session of a line `mistakes_sN`.
+fn mistakes_session(name: &str) -> Option<u32> {
+    name.strip_prefix("mistakes_s")?.parse().ok()
+}
+
+/// In the course's crate (not in a student's, whose course is a crate of its own):
+/// the lines `mistakes_sN`, one for each of the `sessions` that `chosen` keeps,
+/// which prove that each catalogued mistake fails its generated check and names its
+/// rule. How many passed and failed.
+fn check_mistakes(sessions: u32, chosen: &dyn Fn(&str) -> bool) -> (u32, u32) {
+    if cfg!(course_answers) {
+        return (0, 0);
+    }
+    let (mut passed, mut failed) = (0, 0);
+    let no_markers = HashMap::new();
+    for session in 1..=sessions {
+        let name = format!("mistakes_s{session}");
+        let prefix = format!("s{session}.");
+        let any = crate::mistakes::MISTAKES
+            .iter()
+            .any(|m| m.exercise.starts_with(&prefix));
+        if !any || !chosen(&name) {
+            continue;
+        }
+        let verdict = isolation::verdict_of(&name);
+        report(&name, &verdict, None, &no_markers, &HashMap::new());
+        if verdict == Verdict::Passed {
+            passed += 1
+        } else {
+            failed += 1
+        }
+    }
+    (passed, failed)
 }
 
 /// The verdict of `run`: a panic with a stub's message names the stub's exercise.

@@ -17,10 +17,12 @@
 //! ```
 
 mod checklist;
+mod generated;
 mod images;
 mod isolation;
 mod known;
 mod marker;
+mod mistakes;
 mod s1;
 #[cfg(feature = "s2")]
 mod s2;
@@ -35,6 +37,12 @@ mod s6;
 #[cfg(feature = "s7")]
 mod s7;
 mod words;
+
+// The course's own answers, which `generated` compares each exercise with: in a
+// student's exercise crate the dev-dependency `course` (its `tests/course/`), in
+// the course's crate and its views the crate itself.
+#[cfg(not(course_answers))]
+extern crate raycourse as course;
 
 use std::process::ExitCode;
 

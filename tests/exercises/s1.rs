@@ -11,6 +11,7 @@ use raycourse::scene::Scene;
 use raycourse::{Overrides, parse_scene};
 
 use crate::checklist::Exercise;
+use crate::generated;
 use crate::known::{Outcome, close_vec, ensure, maybe, nearest, same_distance, vec};
 use crate::say;
 use crate::words::decimal;
@@ -108,7 +109,8 @@ fn pixel_direction() -> Outcome {
             1e-5,
         )?;
     }
-    in_pixel_units()
+    in_pixel_units()?;
+    generated::pixel_direction(Camera::pixel_direction)
 }
 
 /// Session 3 adds its antialiasing jitter, in pixels, to this direction, so the
@@ -222,7 +224,8 @@ fn sphere_distance() -> Outcome {
             })?;
         }
     }
-    far_sphere()
+    far_sphere()?;
+    generated::sphere_distance(&Sphere::intersect_textbook, &Sphere::intersect)
 }
 
 /// A ray-sphere test: the distance at which the ray meets the sphere, if it does.
@@ -292,7 +295,8 @@ fn nearest_sphere() -> Outcome {
             nearest(gave),
             nearest(None)
         )
-    })
+    })?;
+    generated::nearest_sphere(Scene::nearest_sphere)
 }
 
 /// A light of power `Phi = 400 pi^2` 10 above the point: `Phi / (4 pi r^2) = pi`,
@@ -352,5 +356,5 @@ fn lambert() -> Outcome {
             1e-4,
         )?;
     }
-    Ok(())
+    generated::lambert(PointLight::lambert)
 }

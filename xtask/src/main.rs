@@ -15,6 +15,7 @@
 
 mod book;
 mod cfg;
+mod course;
 mod directive;
 mod exercise;
 mod formulas;

@@ -2,8 +2,10 @@
 //!
 //! It is the session's view with the bodies of that session's exercises stubbed
 //! (see [`crate::exercise`]) and one test, the checklist `tests/exercises/`, which
-//! runs in the course's order: each exercise's known answers, then each stage's
-//! image against the reference image that ships beside it. The view's other tests
+//! runs in the course's order: each exercise's known answers and its comparison
+//! with the course's own function on generated inputs (the course's answers sit in
+//! `tests/course/`, see [`crate::course`]), then each stage's image against the
+//! reference image that ships beside it. The view's other tests
 //! (snapshots to the byte, the unit tests inside the files) pin the course's own
 //! code and would fail for a right answer written another way, so they are left out.
 
@@ -12,6 +14,7 @@ use std::path::Path;
 
 use toml_edit::DocumentMut;
 
+use crate::course::{depend_on_course, write_course};
 use crate::exercise::{Marker, Stub, stub_folder};
 use crate::view::write_view;
 
@@ -36,6 +39,7 @@ pub fn write_exercises(root: &Path, choice: &Choice, out: &Path) -> Result<Vec<M
         ));
     }
     write_view(root, choice.session, out)?;
+    write_course(out)?;
     for left_out in ["tests/suite", "tests/snapshots", "tests/bad-input"] {
         remove(&out.join(left_out))?;
     }
@@ -62,7 +66,7 @@ pub fn write_exercises(root: &Path, choice: &Choice, out: &Path) -> Result<Vec<M
 }
 
 /// The manifest with the library's and the binary's own tests off (only the
-/// checklist runs), marked as an exercise crate for the build script
+/// checklist runs), the course's answers as a dev-dependency, marked as an exercise crate for the build script
 /// (`[package.metadata.raycourse] exercises = true`).
 fn exercise_manifest(text: &str) -> Result<String, String> {
     let mut doc: DocumentMut = text.parse().map_err(|e| format!("Cargo.toml: {e}"))?;
@@ -83,6 +87,7 @@ fn exercise_manifest(text: &str) -> Result<String, String> {
     metadata.set_implicit(true);
     metadata["raycourse"] = toml_edit::Item::Table(marked);
     doc["package"]["metadata"] = toml_edit::Item::Table(metadata);
+    depend_on_course(&mut doc);
     Ok(doc.to_string())
 }
 

@@ -229,7 +229,7 @@ fn write(path: &Path, text: &str) -> Result<(), String> {
 }
 
 /// Copies the file `from` to `to`, making its folder.
-fn copy(from: &Path, to: &Path) -> Result<(), String> {
+pub fn copy(from: &Path, to: &Path) -> Result<(), String> {
     if let Some(folder) = to.parent() {
         fs::create_dir_all(folder).map_err(|e| format!("{}: {e}", folder.display()))?;
     }
@@ -239,7 +239,7 @@ fn copy(from: &Path, to: &Path) -> Result<(), String> {
 }
 
 /// Copies the folder `from` into `to`, recursively.
-fn copy_folder(from: &Path, to: &Path) -> Result<(), String> {
+pub fn copy_folder(from: &Path, to: &Path) -> Result<(), String> {
     for entry in fs::read_dir(from).map_err(|e| format!("{}: {e}", from.display()))? {
         let path = entry.map_err(|e| e.to_string())?.path();
         let target = to.join(path.file_name().unwrap());

@@ -1,0 +1,604 @@
+//! Session 1 on generated inputs: the camera ray through a pixel, the ray-sphere
+//! distance, the nearest hit, Lambert shading.
+
+use proptest::prelude::*;
+use raycourse::camera::Camera;
+use raycourse::geometry::{Ray, Sphere};
+use raycourse::lights::PointLight;
+use raycourse::maths::{Colour, PI, Real, Vec3};
+
+use super::{apart, differs, n, near, near_vec, on_generated, ulps, v};
+use crate::known::Outcome;
+use crate::say;
+
+/// An image side: small and odd ones often (1, 3, 5 ... where `W/2` is not an
+/// integer), large ones too.
+fn side() -> impl Strategy<Value = u32> {
+    prop_oneof![1u32..=9, (5u32..=400).prop_map(|s| s | 1), 2u32..=1200]
+}
+
+/// A pixel index below `size`: the borders often.
+fn index(size: u32) -> impl Strategy<Value = u32> {
+    prop_oneof![Just(0), Just(size - 1), 0..size]
+}
+
+/// A unit direction, with `-0` and axis-aligned ones among them.
+pub fn direction() -> impl Strategy<Value = Vec3> {
+    let axis = prop_oneof![
+        Just(Vec3::new(0.0, 0.0, -1.0)),
+        Just(Vec3::new(-0.0, 0.0, -1.0)),
+        Just(Vec3::X),
+        Just(Vec3::new(0.0, -1.0, -0.0)),
+    ];
+    let any = (-1.0..1.0 as Real, -1.0..1.0 as Real, -1.0..1.0 as Real)
+        .prop_filter("not too short to normalise", |(x, y, z)| {
+            x * x + y * y + z * z > 0.01
+        })
+        .prop_map(|(x, y, z)| Vec3::new(x, y, z).normalize());
+    prop_oneof![1 => axis, 4 => any]
+}
+
+/// A length scale from `1e-4` to `1e4`, powers of ten among them.
+pub fn scale() -> impl Strategy<Value = Real> {
+    prop_oneof![
+        (-4i32..=4).prop_map(|k| (10.0 as Real).powi(k)),
+        (-4.0..4.0 as Real).prop_map(|e| (10.0 as Real).powf(e)),
+    ]
+}
+
+/// Exercise s1.1 on generated images: odd and non-square sizes, border pixels,
+/// fields of view from 1 to 179 degrees. Any length is right, so the directions
+/// are compared once scaled to the course's image plane.
+pub fn pixel_direction(yours: impl Fn(&Camera, u32, u32) -> Vec3) -> Outcome {
+    let inputs = (side(), side(), 1.0..179.0 as Real)
+        .prop_flat_map(|(w, h, fov)| (Just(w), Just(h), Just(fov), index(h), index(w)));
+    on_generated(
+        "Camera::pixel_direction",
+        inputs,
+        |(w, h, degrees, row, column)| {
+            let fov = degrees.to_radians();
+            let camera = Camera::new(Vec3::ZERO, fov, w, h);
+            let course = course::camera::Camera::new(Vec3::ZERO, fov, w, h);
+            let gave = yours(&camera, row, column);
+            let expected = course.pixel_direction(row, column);
+            let scaled = gave * (expected.z / gave.z);
+            if gave.z < 0.0 && near_vec(scaled, expected, ulps(64.0)) {
+                return Ok(());
+            }
+            let case = say!(
+                "W = {w}, H = {h}, alpha = {} degrees, pixel (row {row}, column {column})",
+                "W = {w}, H = {h}, alpha = {} degrés, pixel (ligne {row}, colonne {column})",
+                n(degrees)
+            );
+            let why = pixel_diagnosis(gave, expected, (w, h, fov), (row, column));
+            Err(differs(&case, &v(gave), &v(expected), why))
+        },
+    )
+}
+
+/// Which rule of the camera ray `gave` breaks, `expected` being the course's
+/// direction through pixel (`row`, `column`) of a `w` x `h` image.
+fn pixel_diagnosis(
+    gave: Vec3,
+    expected: Vec3,
+    (w, h, fov): (u32, u32, Real),
+    (row, column): (u32, u32),
+) -> Option<String> {
+    if gave.z >= 0.0 || gave.z.is_nan() {
+        return Some(say!(
+            "the camera looks down -z: the image plane is at z = -H / (2 tan(alpha/2))",
+            "la caméra regarde selon -z\u{a0}: le plan image est en z = -H / (2 tan(alpha/2))"
+        ));
+    }
+    let scaled = gave * (expected.z / gave.z);
+    let (x, y) = (scaled.x, scaled.y);
+    let tolerance = ulps(64.0) * expected.length();
+    let x_right = (x - expected.x).abs() <= tolerance;
+    let y_right = (y - expected.y).abs() <= tolerance;
+    if let Some(theirs) = plane_of(gave, expected) {
+        let plane = -expected.z;
+        let wrong_tangent = (h as Real) / (2.0 * fov.tan());
+        let width = (w as Real) / (2.0 * (fov / 2.0).tan());
+        let detail = if near(theirs, wrong_tangent, plane, 1e-3) {
+            say!(
+                " (yours is H / (2 tan alpha))",
+                " (la vôtre est H / (2 tan alpha))"
+            )
+        } else if near(theirs, width, plane, 1e-3) && w != h {
+            say!(
+                " (yours uses W: the field of view is vertical)",
+                " (la vôtre prend W\u{a0}: le champ de vision est vertical)"
+            )
+        } else {
+            String::new()
+        };
+        return Some(say!(
+            "the image plane lies at H / (2 tan(alpha/2)) = {} from the eye, alpha the vertical field of view in radians; yours at {}{detail}",
+            "le plan image est à H / (2 tan(alpha/2)) = {} de l'œil, alpha le champ de vision vertical en radians\u{a0}; le vôtre à {}{detail}",
+            n(plane),
+            n(theirs)
+        ));
+    }
+    let j = column;
+    let i = h - 1 - row;
+    let mut why = vec![];
+    if !x_right {
+        let off = x - expected.x;
+        why.push(if w % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
+            say!(
+                "the centre of pixel j is at x = j - W/2 + 1/2 for any W: here W = {w} is odd, so W/2 = {} (an integer division drops the half)",
+                "le centre du pixel j est en x = j - W/2 + 1/2 pour tout W\u{a0}: ici W = {w} est impair, donc W/2 = {} (une division entière perd la moitié)",
+                n(w as Real / 2.0)
+            )
+        } else if (off.abs() - 0.5).abs() < 1e-6 {
+            say!(
+                "the centre of pixel j is at x = j - W/2 + 1/2: the half pixel is off",
+                "le centre du pixel j est en x = j - W/2 + 1/2\u{a0}: le demi-pixel est faux"
+            )
+        } else {
+            say!(
+                "the centre of pixel j is at x = j - W/2 + 1/2 (here j = {j}, x = {}): yours is {} off",
+                "le centre du pixel j est en x = j - W/2 + 1/2 (ici j = {j}, x = {})\u{a0}: le vôtre est décalé de {}",
+                n(expected.x),
+                n(off)
+            )
+        });
+    }
+    if !y_right {
+        let off = y - expected.y;
+        let from_top = row as Real - h as Real / 2.0 + 0.5;
+        why.push(if (y - from_top).abs() < 1e-6 {
+            say!(
+                "rows count from the top of the image and y from the bottom: y = i - H/2 + 1/2 with i = H - 1 - row = {i}",
+                "les lignes se comptent depuis le haut de l'image et y depuis le bas\u{a0}: y = i - H/2 + 1/2 avec i = H - 1 - ligne = {i}"
+            )
+        } else if h % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
+            say!(
+                "the centre of row i is at y = i - H/2 + 1/2 for any H: here H = {h} is odd, so H/2 = {} (an integer division drops the half)",
+                "le centre de la ligne i est en y = i - H/2 + 1/2 pour tout H\u{a0}: ici H = {h} est impair, donc H/2 = {} (une division entière perd la moitié)",
+                n(h as Real / 2.0)
+            )
+        } else {
+            say!(
+                "the centre of row i = H - 1 - row = {i} is at y = i - H/2 + 1/2 = {}: yours is {} off",
+                "le centre de la ligne i = H - 1 - ligne = {i} est en y = i - H/2 + 1/2 = {}\u{a0}: le vôtre est décalé de {}",
+                n(expected.y),
+                n(off)
+            )
+        });
+    }
+    (!why.is_empty()).then(|| why.join(&say!("; ", "\u{a0}; ")))
+}
+
+/// The distance of the image plane that `gave` implies, when it is the course's
+/// `expected` but for that distance: `gave = k (x, y, -d)` with the course's `x`
+/// and `y`, `d` another distance. `None` when `x` and `y` are wrong, or right.
+fn plane_of(gave: Vec3, expected: Vec3) -> Option<Real> {
+    let (ex, ey) = (expected.x, expected.y);
+    let k = if ex.abs() >= ey.abs() {
+        gave.x / ex
+    } else {
+        gave.y / ey
+    };
+    let tolerance = ulps(256.0) * expected.length();
+    let same_xy = (gave.x - k * ex).abs() <= tolerance * k.abs()
+        && (gave.y - k * ey).abs() <= tolerance * k.abs();
+    let theirs = -gave.z / k;
+    let other = !near(theirs, -expected.z, expected.z, ulps(256.0));
+    (k.is_finite() && k > 0.0 && same_xy && other).then_some(theirs)
+}
+
+/// A sphere of white diffuse material, in the student's crate.
+fn sphere(centre: Vec3, radius: Real) -> Sphere {
+    crate::s1::sphere(centre, radius)
+}
+
+/// The same sphere in the course's crate.
+fn course_sphere(centre: Vec3, radius: Real) -> course::geometry::Sphere {
+    course::geometry::Sphere {
+        centre,
+        radius,
+        material: course::materials::Material::Diffuse {
+            albedo: Colour::ONE,
+        },
+        emission: Colour::ZERO,
+    }
+}
+
+/// Where a generated ray starts, seen from the sphere: its distance from the
+/// centre and from the ray's line, in radii.
+#[derive(Clone, Copy, Debug)]
+enum Place {
+    /// In front of the sphere, `distance` radii from its centre, the line passing
+    /// `miss` radii from it (below 1: a hit; just below or above 1: grazing).
+    Outside { distance: Real, miss: Real },
+    /// Inside, `depth` radii from the centre.
+    Inside { depth: Real },
+    /// Behind the sphere, moving away.
+    Behind { distance: Real },
+}
+
+/// A ray and a sphere: `(centre, radius, origin, direction, place)`.
+type RaySphereCase = (Vec3, Real, Vec3, Vec3, Place);
+
+/// Rays and spheres at every scale from `1e-4` to `1e4`, in front, grazing (the
+/// line a thousandth of a radius inside or outside), from inside and behind;
+/// with `far`, spheres up to `1e8` radii away (`1e4` in single precision).
+fn ray_sphere(far: bool) -> impl Strategy<Value = RaySphereCase> {
+    let reach: Real = match (far, std::mem::size_of::<Real>()) {
+        (true, 8) => 1e8,
+        (true, _) => 1e4,
+        (false, _) => 1e3,
+    };
+    let grazing = prop_oneof![Just(0.999 as Real), Just(1.001 as Real)];
+    let place = prop_oneof![
+        (
+            1.5..reach.log10(),
+            prop_oneof![0.0..0.99 as Real, grazing.clone(), 1.01..3.0 as Real]
+        )
+            .prop_map(|(e, miss)| Place::Outside {
+                distance: (10.0 as Real).powf(e),
+                miss
+            }),
+        (1.5..reach.log10(), grazing).prop_map(|(e, miss)| Place::Outside {
+            distance: (10.0 as Real).powf(e),
+            miss
+        }),
+        (0.0..0.99 as Real).prop_map(|depth| Place::Inside { depth }),
+        (1.5..100.0 as Real).prop_map(|distance| Place::Behind { distance }),
+    ];
+    let centre = (scale(), direction());
+    (centre, scale(), direction(), direction(), place).prop_map(
+        |((far_off, towards), radius, d, side, place)| {
+            let centre = far_off * towards;
+            let across = (side - side.dot(d) * d).normalize_or(d.any_orthonormal_vector());
+            let origin = match place {
+                Place::Outside { distance, miss } => {
+                    let along = (distance * distance - miss * miss).max(0.0).sqrt();
+                    centre - radius * along * d + radius * miss * across
+                }
+                Place::Inside { depth } => centre + radius * depth * across,
+                Place::Behind { distance } => centre + radius * distance * d,
+            };
+            (centre, radius, origin, d, place)
+        },
+    )
+}
+
+/// A ray-sphere test of the student's crate.
+type Intersect<'a> = &'a dyn Fn(&Sphere, &Ray) -> Option<Real>;
+
+/// Exercise s1.2 on generated rays and spheres: both tests the exercise marks, the
+/// textbook's within the scales where its discriminant keeps its digits (a sphere
+/// at most 1000 radii away), the renderer's up to `1e8` radii away. Distances
+/// agree within the rounding of `|s| + R`, and of `|s|^2 / R` for the textbook's.
+pub fn sphere_distance(textbook: Intersect, robust: Intersect) -> Outcome {
+    on_generated("Sphere::intersect_textbook", ray_sphere(false), |case| {
+        compare_distance(
+            textbook,
+            case,
+            course::geometry::Sphere::intersect_textbook,
+            true,
+        )
+    })?;
+    on_generated("Sphere::intersect", ray_sphere(true), |case| {
+        compare_distance(robust, case, course::geometry::Sphere::intersect, false)
+    })
+}
+
+/// The student's distance against the course's on one case.
+fn compare_distance(
+    yours: Intersect,
+    (centre, radius, origin, direction, place): RaySphereCase,
+    course: fn(&course::geometry::Sphere, &course::geometry::Ray) -> Option<Real>,
+    textbook: bool,
+) -> Result<(), String> {
+    let gave = yours(&sphere(centre, radius), &Ray::new(origin, direction));
+    let expected = course(
+        &course_sphere(centre, radius),
+        &course::geometry::Ray::new(origin, direction),
+    );
+    let s = (origin - centre).length();
+    let mut tolerance = ulps(256.0) * (s + radius);
+    if textbook {
+        tolerance += ulps(64.0) * s * s / radius;
+    }
+    let same = match (gave, expected) {
+        (None, None) => true,
+        (Some(t), Some(e)) => (t - e).abs() <= tolerance,
+        _ => false,
+    };
+    if same {
+        return Ok(());
+    }
+    let case = say!(
+        "a sphere of radius {} at {}, the ray from {} along {}",
+        "une sphère de rayon {} en {}, le rayon issu de {} selon {}",
+        n(radius),
+        v(centre),
+        v(origin),
+        v(direction)
+    );
+    let (gave_t, expected_t) = apart(gave.unwrap_or(0.0), expected.unwrap_or(0.0));
+    let show = |t: Option<Real>, text: String| {
+        t.map_or(say!("no hit", "aucune intersection"), |_| {
+            format!("t = {text}")
+        })
+    };
+    let why = distance_diagnosis(
+        gave,
+        expected,
+        (centre, radius, origin, direction),
+        place,
+        textbook,
+    );
+    Err(differs(
+        &case,
+        &show(gave, gave_t),
+        &show(expected, expected_t),
+        why,
+    ))
+}
+
+/// Which rule of the ray-sphere distance `gave` breaks.
+fn distance_diagnosis(
+    gave: Option<Real>,
+    expected: Option<Real>,
+    (centre, radius, origin, direction): (Vec3, Real, Vec3, Vec3),
+    place: Place,
+    textbook: bool,
+) -> Option<String> {
+    let s = origin - centre;
+    let sd = s.dot(direction);
+    let chord = (s - sd * direction).length();
+    let root = (radius * radius - chord * chord).max(0.0).sqrt();
+    let (near_root, far_root) = (-sd - root, -sd + root);
+    let close = |t: Real, r: Real| (t - r).abs() <= 1e-3 * radius + ulps(1024.0) * s.length();
+    Some(match (gave, expected, place) {
+        (_, _, Place::Outside { distance, .. }) if !textbook && distance > 1e3 => say!(
+            "the sphere is {} radii away: the textbook discriminant (s.d)^2 - (|s|^2 - R^2) loses R^2 in the rounding of |s|^2; compute it as R^2 - |s - (s.d) d|^2",
+            "la sphère est à {} rayons\u{a0}: le discriminant du manuel (s.d)^2 - (|s|^2 - R^2) perd R^2 dans l'arrondi de |s|^2\u{a0}; calculez-le comme R^2 - |s - (s.d) d|^2",
+            n(distance)
+        ),
+        (Some(t), _, Place::Behind { .. })
+            if t < 0.0 || close(t, near_root) || close(t, far_root) =>
+        {
+            say!(
+                "the sphere is behind the ray: both roots are negative, and only t > 0 is a hit",
+                "la sphère est derrière le rayon\u{a0}: les deux racines sont négatives, et seul t > 0 est une intersection"
+            )
+        }
+        (Some(t), _, _) if t <= 0.0 => say!(
+            "only t > 0 is a hit: yours is behind the ray's origin",
+            "seul t > 0 est une intersection\u{a0}: la vôtre est derrière l'origine du rayon"
+        ),
+        (Some(t), Some(_), Place::Inside { .. }) if close(t, near_root) => say!(
+            "from inside the sphere the near root -s.d - sqrt(Delta) is negative: the hit is the far root -s.d + sqrt(Delta)",
+            "depuis l'intérieur de la sphère la racine proche -s.d - sqrt(Delta) est négative\u{a0}: l'intersection est la racine lointaine -s.d + sqrt(Delta)"
+        ),
+        (Some(t), Some(_), Place::Outside { .. }) if close(t, far_root) => say!(
+            "from outside, the hit is the nearer root -s.d - sqrt(Delta), where the ray enters; yours is where it leaves",
+            "depuis l'extérieur, l'intersection est la racine proche -s.d - sqrt(Delta), où le rayon entre\u{a0}; la vôtre est où il sort"
+        ),
+        (None, Some(_), Place::Inside { .. }) => say!(
+            "from inside the sphere the near root is negative, but the far root -s.d + sqrt(Delta) is a hit",
+            "depuis l'intérieur de la sphère la racine proche est négative, mais la racine lointaine -s.d + sqrt(Delta) est une intersection"
+        ),
+        (_, _, Place::Outside { miss, .. }) if (miss - 1.0).abs() < 0.01 => say!(
+            "the ray grazes the sphere, its line {} radius from the centre: Delta = R^2 - |s - (s.d) d|^2 decides, and its sign must be right",
+            "le rayon frôle la sphère, sa droite à {} rayon du centre\u{a0}: Delta = R^2 - |s - (s.d) d|^2 décide, et son signe doit être juste",
+            n(miss)
+        ),
+        _ => return None,
+    })
+}
+
+/// Exercise s1.3 on generated rows of spheres along a ray: some behind, some
+/// missed, some at exactly the same distance (the same sphere listed twice, where
+/// the first of the list wins, as the chapter says).
+pub fn nearest_sphere(
+    yours: impl Fn(&raycourse::scene::Scene, &Ray) -> Option<(Real, usize)>,
+) -> Outcome {
+    let one = (
+        -20.0..20.0 as Real,
+        0.0..3.0 as Real,
+        0.1..2.0 as Real,
+        0u8..4,
+    );
+    let inputs = (direction(), prop::collection::vec(one, 1..6), scale());
+    on_generated("Scene::nearest_sphere", inputs, |(d, spheres, size)| {
+        let across = d.any_orthonormal_vector();
+        let mut list = vec![];
+        for (along, off, radius, twin) in spheres {
+            let sphere = (size * (along * d + off * across), size * radius);
+            list.push(sphere);
+            if twin == 0 {
+                list.push(sphere);
+            }
+        }
+        let ray = Ray::new(Vec3::ZERO, d);
+        let scene = scene(list.iter().map(|&(c, r)| sphere(c, r)).collect());
+        let course_scene = course::scene::Scene::new(
+            course::camera::Camera::new(Vec3::ZERO, 1.0, 1, 1),
+            list.iter().map(|&(c, r)| course_sphere(c, r)).collect(),
+            None,
+            course::scene::Settings::default(),
+        );
+        let gave = yours(&scene, &ray);
+        let expected = course_scene.nearest_sphere(&course::geometry::Ray::new(Vec3::ZERO, d));
+        let same = match (gave, expected) {
+            (None, None) => true,
+            (Some((t, i)), Some((e, j))) => {
+                i == j && (t - e).abs() <= ulps(256.0) * (e + size * 40.0)
+            }
+            _ => false,
+        };
+        if same {
+            return Ok(());
+        }
+        let listed: Vec<String> = list
+            .iter()
+            .enumerate()
+            .map(|(i, (c, r))| {
+                say!(
+                    "{i}: radius {} at {}",
+                    "{i}\u{a0}: rayon {} en {}",
+                    n(*r),
+                    v(*c)
+                )
+            })
+            .collect();
+        let case = say!(
+            "spheres {}, the ray from the origin along {}",
+            "sphères {}, le rayon issu de l'origine selon {}",
+            listed.join(&say!("; ", "\u{a0}; ")),
+            v(d)
+        );
+        let show = |hit: Option<(Real, usize)>| {
+            hit.map_or(say!("no hit", "aucune intersection"), |(t, i)| {
+                say!("sphere {i} at t = {}", "sphère {i} en t = {}", n(t))
+            })
+        };
+        let why = match (gave, expected) {
+            (Some((t, i)), Some((e, j)))
+                if i > j && list[i] == list[j] && (t - e).abs() <= 1e-9 * e.abs() =>
+            {
+                Some(say!(
+                    "spheres {j} and {i} are met at the same distance: the first of the list wins (a later sphere replaces the nearest only when strictly nearer, t < t_nearest)",
+                    "les sphères {j} et {i} sont rencontrées à la même distance\u{a0}: la première de la liste l'emporte (une sphère plus loin dans la liste ne remplace la plus proche que si elle est strictement plus proche, t < t_plus_proche)"
+                ))
+            }
+            (Some((t, _)), Some((e, _))) if t > e => Some(say!(
+                "the nearest hit is the smallest t of all the spheres met, not the first met in the list",
+                "l'intersection la plus proche est le plus petit t de toutes les sphères rencontrées, pas la première rencontrée dans la liste"
+            )),
+            _ => None,
+        };
+        Err(differs(&case, &show(gave), &show(expected), why))
+    })
+}
+
+/// A scene of `spheres` in the student's crate, with no light.
+fn scene(spheres: Vec<Sphere>) -> raycourse::scene::Scene {
+    raycourse::scene::Scene::new(
+        Camera::new(Vec3::ZERO, 1.0, 1, 1),
+        spheres,
+        None,
+        raycourse::scene::Settings::default(),
+    )
+}
+
+/// Exercise s1.4 on generated lights and points, at scales from `1e-4` to `1e4`,
+/// with normals facing the light, grazing and facing away. Components agree within
+/// a few roundings of the radiance.
+pub fn lambert(yours: impl Fn(&PointLight, Vec3, Vec3, Colour) -> Colour) -> Outcome {
+    let albedo = (0.0..1.0 as Real, 0.0..1.0 as Real, 0.0..1.0 as Real)
+        .prop_map(|(r, g, b)| Colour::new(r, g, b));
+    let inputs = (
+        direction(),
+        scale(),
+        direction(),
+        direction(),
+        1e-3..1e6 as Real,
+        albedo,
+    );
+    on_generated(
+        "PointLight::lambert",
+        inputs,
+        |(towards, distance, normal, spread, intensity, albedo)| {
+            let point = spread * distance * 0.5;
+            let light = PointLight {
+                position: point + distance * towards,
+                intensity,
+            };
+            let course = course::lights::PointLight {
+                position: light.position,
+                intensity,
+            };
+            let gave = yours(&light, point, normal, albedo);
+            let expected = course.lambert(point, normal, albedo);
+            // The radiance facing the light: a cosine near 0 is rounded alike whatever
+            // the formula, so the tolerance follows the light's full strength.
+            let full = intensity / (4.0 * PI * distance * distance) / PI;
+            if (gave - expected).abs().max_element() <= ulps(64.0) * full {
+                return Ok(());
+            }
+            let case = say!(
+                "a light of power {} at {}, the point {} with normal {} and albedo {}",
+                "une source de puissance {} en {}, le point {} de normale {} et d'albédo {}",
+                n(intensity),
+                v(light.position),
+                v(point),
+                v(normal),
+                v(albedo)
+            );
+            let why = lambert_diagnosis(gave, expected, normal.dot(towards), distance);
+            Err(differs(&case, &v(gave), &v(expected), why))
+        },
+    )
+}
+
+/// Which rule of Lambert's shading `gave` breaks: `cos` is `<N, l>`, `d` the
+/// distance to the light.
+fn lambert_diagnosis(gave: Colour, expected: Colour, cos: Real, d: Real) -> Option<String> {
+    if cos <= 0.0 {
+        return Some(say!(
+            "the surface faces away from the light (<N, l> = {}): it gets no light, max(0, <N, l>)",
+            "la surface tourne le dos à la source (<N, l> = {})\u{a0}: elle ne reçoit rien, max(0, <N, l>)",
+            n(cos)
+        ));
+    }
+    let channel = if expected.x.abs() >= expected.y.abs().max(expected.z.abs()) {
+        0
+    } else if expected.y.abs() >= expected.z.abs() {
+        1
+    } else {
+        2
+    };
+    let ratio = gave[channel] / expected[channel];
+    let rules: [(Real, String); 6] = [
+        (
+            PI,
+            say!(
+                "the diffuse BRDF is albedo / pi: the 1/pi is missing",
+                "la BRDF diffuse est albédo / pi\u{a0}: il manque le 1/pi"
+            ),
+        ),
+        (
+            4.0 * PI,
+            say!(
+                "a point light of power I gives I / (4 pi d^2): the 1/(4 pi) is missing",
+                "une source ponctuelle de puissance I donne I / (4 pi d^2)\u{a0}: il manque le 1/(4 pi)"
+            ),
+        ),
+        (
+            d,
+            say!(
+                "yours is d times the course's: the light falls off as 1/d^2, and l is the unit vector to the light (the vector to it divided by d)",
+                "le vôtre vaut d fois celui du cours\u{a0}: la lumière décroît en 1/d^2, et l est le vecteur unitaire vers la source (le vecteur divisé par d)"
+            ),
+        ),
+        (
+            d * d,
+            say!(
+                "the light falls off as 1/d^2: the falloff is missing",
+                "la lumière décroît en 1/d^2\u{a0}: la décroissance manque"
+            ),
+        ),
+        (
+            1.0 / cos,
+            say!(
+                "Lambert's cosine <N, l> is missing",
+                "il manque le cosinus de Lambert <N, l>"
+            ),
+        ),
+        (
+            1.0 / PI,
+            say!("1/pi is counted twice", "le 1/pi est compté deux fois"),
+        ),
+    ];
+    rules
+        .into_iter()
+        .find(|(r, _)| (ratio / r - 1.0).abs() < 1e-4)
+        .map(|(_, why)| why)
+}

@@ -1,0 +1,254 @@
+//! The diagnoses, proved: each mistake of this catalogue, written as a student
+//! might, is run through its exercise's generated check, which must fail and name
+//! the rule the mistake breaks. The course's crate runs them as the checklist's
+//! last lines (`mistakes_sN`); a student's exercise crate, whose `course` is a crate
+//! of its own, does not.
+
+use raycourse::camera::Camera;
+use raycourse::geometry::{Ray, Sphere};
+use raycourse::lights::PointLight;
+use raycourse::maths::{Colour, PI, Real, Vec3};
+use raycourse::scene::Scene;
+
+use crate::generated;
+use crate::known::Outcome;
+use crate::say;
+
+/// A mistake: its exercise, what it gets wrong, the generated check with the
+/// mistaken function in place of the student's, and what the failure must say (in
+/// English and in French).
+pub struct Mistake {
+    /// The exercise, such as `s1.1`.
+    pub exercise: &'static str,
+    /// The mistake, in a few words.
+    pub what: &'static str,
+    /// The generated check run on the mistaken function.
+    pub run: fn() -> Outcome,
+    /// Words the failure's message must hold: `[english, french]`.
+    pub names: [&'static str; 2],
+}
+
+/// The catalogue, in the course's order.
+pub const MISTAKES: &[Mistake] = &[
+    Mistake {
+        exercise: "s1.1",
+        what: "W/2 and H/2 in integers",
+        run: || {
+            generated::pixel_direction(|c, row, column| {
+                let i = c.height - 1 - row;
+                let half = |size: u32| (size / 2) as Real;
+                Vec3::new(
+                    column as Real - half(c.width) + 0.5,
+                    i as Real - half(c.height) + 0.5,
+                    plane(c),
+                )
+            })
+        },
+        names: [
+            "an integer division drops the half",
+            "une division entière perd la moitié",
+        ],
+    },
+    Mistake {
+        exercise: "s1.1",
+        what: "rows counted from the top",
+        run: || {
+            generated::pixel_direction(|c, row, column| {
+                let (w, h) = (c.width as Real, c.height as Real);
+                Vec3::new(
+                    column as Real - w / 2.0 + 0.5,
+                    row as Real - h / 2.0 + 0.5,
+                    plane(c),
+                )
+            })
+        },
+        names: [
+            "rows count from the top of the image",
+            "les lignes se comptent depuis le haut",
+        ],
+    },
+    Mistake {
+        exercise: "s1.1",
+        what: "tan(alpha) for tan(alpha/2)",
+        run: || {
+            generated::pixel_direction(|c, row, column| {
+                let d = c.pixel_direction(row, column);
+                Vec3::new(d.x, d.y, -(c.height as Real) / (2.0 * c.fov.tan()))
+            })
+        },
+        names: [
+            "yours is H / (2 tan alpha)",
+            "la vôtre est H / (2 tan alpha)",
+        ],
+    },
+    Mistake {
+        exercise: "s1.2",
+        what: "the far root from outside",
+        run: || {
+            generated::sphere_distance(&Sphere::intersect_textbook, &|s, r| {
+                roots(s, r).1.filter(|&t| t > 0.0)
+            })
+        },
+        names: ["yours is where it leaves", "la vôtre est où il sort"],
+    },
+    Mistake {
+        exercise: "s1.2",
+        what: "the near root, even behind the origin",
+        run: || generated::sphere_distance(&|s, r| roots(s, r).0, &Sphere::intersect),
+        names: ["only t > 0 is a hit", "seul t > 0 est une intersection"],
+    },
+    Mistake {
+        exercise: "s1.2",
+        what: "the near root only, from inside too",
+        run: || {
+            generated::sphere_distance(
+                &|s, r| roots(s, r).0.filter(|&t| t > 0.0),
+                &Sphere::intersect,
+            )
+        },
+        names: [
+            "from inside the sphere the near root is negative",
+            "depuis l'intérieur de la sphère la racine proche est négative",
+        ],
+    },
+    Mistake {
+        exercise: "s1.2",
+        what: "the textbook discriminant in the renderer's test",
+        run: || {
+            generated::sphere_distance(&Sphere::intersect_textbook, &Sphere::intersect_textbook)
+        },
+        names: [
+            "loses R^2 in the rounding of |s|^2",
+            "perd R^2 dans l'arrondi de |s|^2",
+        ],
+    },
+    Mistake {
+        exercise: "s1.3",
+        what: "a tie won by the last sphere listed",
+        run: || {
+            generated::nearest_sphere(|scene, ray| {
+                let mut nearest: Option<(Real, usize)> = None;
+                for (i, sphere) in scene.spheres.iter().enumerate() {
+                    if let Some(t) = sphere.intersect(ray)
+                        && nearest.is_none_or(|(best, _)| t <= best)
+                    {
+                        nearest = Some((t, i));
+                    }
+                }
+                nearest
+            })
+        },
+        names: [
+            "the first of the list wins",
+            "la première de la liste l'emporte",
+        ],
+    },
+    Mistake {
+        exercise: "s1.3",
+        what: "the first sphere of the list that the ray meets",
+        run: || {
+            generated::nearest_sphere(|scene: &Scene, ray| {
+                scene
+                    .spheres
+                    .iter()
+                    .enumerate()
+                    .find_map(|(i, s)| s.intersect(ray).map(|t| (t, i)))
+            })
+        },
+        names: [
+            "the smallest t of all the spheres met",
+            "le plus petit t de toutes les sphères",
+        ],
+    },
+    Mistake {
+        exercise: "s1.4",
+        what: "no 1/pi",
+        run: || {
+            generated::lambert(|light, point, normal, albedo| {
+                PI * light.lambert(point, normal, albedo)
+            })
+        },
+        names: ["the 1/pi is missing", "il manque le 1/pi"],
+    },
+    Mistake {
+        exercise: "s1.4",
+        what: "the cosine not clamped",
+        run: || {
+            generated::lambert(|light: &PointLight, point, normal: Vec3, albedo: Colour| {
+                let to_light = light.position - point;
+                let d2 = to_light.length_squared();
+                light.intensity / (4.0 * PI * d2) * normal.dot(to_light / d2.sqrt()) * albedo / PI
+            })
+        },
+        names: [
+            "it gets no light, max(0, <N, l>)",
+            "elle ne reçoit rien, max(0, <N, l>)",
+        ],
+    },
+    Mistake {
+        exercise: "s1.4",
+        what: "l not normalised",
+        run: || {
+            generated::lambert(|light: &PointLight, point, normal: Vec3, albedo: Colour| {
+                let to_light = light.position - point;
+                let d2 = to_light.length_squared();
+                light.intensity / (4.0 * PI * d2) * normal.dot(to_light).max(0.0) * albedo / PI
+            })
+        },
+        names: [
+            "l is the unit vector to the light",
+            "l est le vecteur unitaire vers la source",
+        ],
+    },
+];
+
+/// The image plane's `z` of the course's camera: `-H / (2 tan(alpha/2))`.
+fn plane(camera: &Camera) -> Real {
+    -(camera.height as Real) / (2.0 * (camera.fov / 2.0).tan())
+}
+
+/// Both roots of the textbook's quadratic, near and far, if the line meets the
+/// sphere.
+fn roots(sphere: &Sphere, ray: &Ray) -> (Option<Real>, Option<Real>) {
+    let s = ray.origin - sphere.centre;
+    let sd = s.dot(ray.direction);
+    let delta = sd * sd - (s.length_squared() - sphere.radius * sphere.radius);
+    if delta < 0.0 {
+        return (None, None);
+    }
+    (Some(-sd - delta.sqrt()), Some(-sd + delta.sqrt()))
+}
+
+/// The checklist's line for the mistakes of session `session`: each must fail its
+/// generated check and name its rule.
+pub fn check_session(session: u32) -> Outcome {
+    let prefix = format!("s{session}.");
+    for mistake in MISTAKES.iter().filter(|m| m.exercise.starts_with(&prefix)) {
+        let [english, french] = mistake.names;
+        let words = if crate::words::french() {
+            french
+        } else {
+            english
+        };
+        match (mistake.run)() {
+            Ok(()) => {
+                return Err(say!(
+                    "the mistake \"{}\" of exercise {} passes its generated check",
+                    "l'erreur «\u{a0}{}\u{a0}» de l'exercice {} passe sa vérification générée",
+                    mistake.what,
+                    mistake.exercise
+                ));
+            }
+            Err(why) if !why.contains(words) => {
+                return Err(say!(
+                    "the mistake \"{}\" of exercise {} fails without naming its rule (\"{words}\"): {why}",
+                    "l'erreur «\u{a0}{}\u{a0}» de l'exercice {} échoue sans nommer sa règle («\u{a0}{words}\u{a0}»)\u{a0}: {why}",
+                    mistake.what,
+                    mistake.exercise
+                ));
+            }
+            Err(_) => {}
+        }
+    }
+    Ok(())
+}
