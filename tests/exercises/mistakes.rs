@@ -76,10 +76,7 @@ pub const MISTAKES: &[Mistake] = &[
                 Vec3::new(d.x, d.y, -(c.height as Real) / (2.0 * c.fov.tan()))
             })
         },
-        names: [
-            "yours is H / (2 tan alpha)",
-            "la vôtre est H / (2 tan alpha)",
-        ],
+        names: ["H / (2 tan alpha)", "H / (2 tan alpha)"],
     },
     Mistake {
         exercise: "s1.2",

@@ -85,9 +85,17 @@ fn pixel_diagnosis(
     (row, column): (u32, u32),
 ) -> Option<String> {
     if gave.z >= 0.0 || gave.z.is_nan() {
+        let wide = if fov > PI / 2.0 {
+            say!(
+                " (H / (2 tan alpha) would change sign past 90 degrees)",
+                " (H / (2 tan alpha) changerait de signe au-delà de 90 degrés)"
+            )
+        } else {
+            String::new()
+        };
         return Some(say!(
-            "the camera looks down -z: the image plane is at z = -H / (2 tan(alpha/2))",
-            "la caméra regarde selon -z\u{a0}: le plan image est en z = -H / (2 tan(alpha/2))"
+            "the camera looks down -z: the image plane is at z = -H / (2 tan(alpha/2)){wide}",
+            "la caméra regarde selon -z\u{a0}: le plan image est en z = -H / (2 tan(alpha/2)){wide}"
         ));
     }
     let scaled = gave * (expected.z / gave.z);
@@ -95,30 +103,6 @@ fn pixel_diagnosis(
     let tolerance = ulps(64.0) * expected.length();
     let x_right = (x - expected.x).abs() <= tolerance;
     let y_right = (y - expected.y).abs() <= tolerance;
-    if let Some(theirs) = plane_of(gave, expected) {
-        let plane = -expected.z;
-        let wrong_tangent = (h as Real) / (2.0 * fov.tan());
-        let width = (w as Real) / (2.0 * (fov / 2.0).tan());
-        let detail = if near(theirs, wrong_tangent, plane, 1e-3) {
-            say!(
-                " (yours is H / (2 tan alpha))",
-                " (la vôtre est H / (2 tan alpha))"
-            )
-        } else if near(theirs, width, plane, 1e-3) && w != h {
-            say!(
-                " (yours uses W: the field of view is vertical)",
-                " (la vôtre prend W\u{a0}: le champ de vision est vertical)"
-            )
-        } else {
-            String::new()
-        };
-        return Some(say!(
-            "the image plane lies at H / (2 tan(alpha/2)) = {} from the eye, alpha the vertical field of view in radians; yours at {}{detail}",
-            "le plan image est à H / (2 tan(alpha/2)) = {} de l'œil, alpha le champ de vision vertical en radians\u{a0}; le vôtre à {}{detail}",
-            n(plane),
-            n(theirs)
-        ));
-    }
     let j = column;
     let i = h - 1 - row;
     let mut why = vec![];
@@ -144,9 +128,9 @@ fn pixel_diagnosis(
             )
         });
     }
+    let from_top = row as Real - h as Real / 2.0 + 0.5;
     if !y_right {
         let off = y - expected.y;
-        let from_top = row as Real - h as Real / 2.0 + 0.5;
         why.push(if (y - from_top).abs() < 1e-6 {
             say!(
                 "rows count from the top of the image and y from the bottom: y = i - H/2 + 1/2 with i = H - 1 - row = {i}",
@@ -167,7 +151,41 @@ fn pixel_diagnosis(
             )
         });
     }
+    // A half pixel or rows from the top explain the difference better than an
+    // image plane at another distance, which any wrong x or y may look like.
+    let half = |off: Real| (off.abs() - 0.5).abs() < 1e-6;
+    let specific = (!x_right && half(x - expected.x))
+        || (!y_right && (half(y - expected.y) || (y - from_top).abs() < 1e-6));
+    if !specific && let Some(theirs) = plane_of(gave, expected) {
+        return Some(plane_rule(theirs, -expected.z, (w, h, fov)));
+    }
     (!why.is_empty()).then(|| why.join(&say!("; ", "\u{a0}; ")))
+}
+
+/// The rule of the image plane's distance, when `gave` puts it at `theirs` rather
+/// than the course's `plane`.
+fn plane_rule(theirs: Real, plane: Real, (w, h, fov): (u32, u32, Real)) -> String {
+    let wrong_tangent = (h as Real) / (2.0 * fov.tan());
+    let width = (w as Real) / (2.0 * (fov / 2.0).tan());
+    let detail = if near(theirs, wrong_tangent, plane, 1e-3) {
+        say!(
+            " (yours is H / (2 tan alpha))",
+            " (la vôtre est H / (2 tan alpha))"
+        )
+    } else if near(theirs, width, plane, 1e-3) && w != h {
+        say!(
+            " (yours uses W: the field of view is vertical)",
+            " (la vôtre prend W\u{a0}: le champ de vision est vertical)"
+        )
+    } else {
+        String::new()
+    };
+    say!(
+        "the image plane lies at H / (2 tan(alpha/2)) = {} from the eye, alpha the vertical field of view in radians; yours at {}{detail}",
+        "le plan image est à H / (2 tan(alpha/2)) = {} de l'œil, alpha le champ de vision vertical en radians\u{a0}; le vôtre à {}{detail}",
+        n(plane),
+        n(theirs)
+    )
 }
 
 /// The distance of the image plane that `gave` implies, when it is the course's
@@ -353,9 +371,13 @@ fn distance_diagnosis(
     let chord = (s - sd * direction).length();
     let root = (radius * radius - chord * chord).max(0.0).sqrt();
     let (near_root, far_root) = (-sd - root, -sd + root);
+    let textbook_gives = course::geometry::Sphere::intersect_textbook(
+        &course_sphere(centre, radius),
+        &course::geometry::Ray::new(origin, direction),
+    );
     let close = |t: Real, r: Real| (t - r).abs() <= 1e-3 * radius + ulps(1024.0) * s.length();
     Some(match (gave, expected, place) {
-        (_, _, Place::Outside { distance, .. }) if !textbook && distance > 1e3 => say!(
+        (_, _, Place::Outside { distance, .. }) if !textbook && gave == textbook_gives => say!(
             "the sphere is {} radii away: the textbook discriminant (s.d)^2 - (|s|^2 - R^2) loses R^2 in the rounding of |s|^2; compute it as R^2 - |s - (s.d) d|^2",
             "la sphère est à {} rayons\u{a0}: le discriminant du manuel (s.d)^2 - (|s|^2 - R^2) perd R^2 dans l'arrondi de |s|^2\u{a0}; calculez-le comme R^2 - |s - (s.d) d|^2",
             n(distance)
