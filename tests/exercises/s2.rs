@@ -1,11 +1,12 @@
 //! Session 2: gamma, the offset of new rays, the shadow ray, reflection, refraction.
 
-use raycourse::geometry::Ray;
+use raycourse::geometry::{Hit, Ray};
 use raycourse::materials::optics::{reflect, refract};
 use raycourse::maths::{Real, Vec3};
 use raycourse::render::film::display;
 
 use crate::checklist::Exercise;
+use crate::generated;
 use crate::known::{Outcome, close, close_vec, ensure, maybe, vec};
 use crate::s1::sphere;
 use crate::say;
@@ -88,7 +89,7 @@ fn gamma() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::display(display)
 }
 
 /// The hit of a ray from the eye on a sphere of radius 1 at distance 5, and of a
@@ -169,7 +170,7 @@ fn spawn() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::spawn(Hit::spawn)
 }
 
 /// The shadow ray towards a point: unit direction towards it, and the distance
@@ -206,7 +207,7 @@ fn spawn_towards() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::spawn_towards(Hit::spawn_towards)
 }
 
 /// `d - 2 (d . N) N`: off a floor, the vertical part changes sign; head-on, the
@@ -239,7 +240,7 @@ fn mirror() -> Outcome {
             1e-5,
         )?;
     }
-    Ok(())
+    generated::reflect(reflect)
 }
 
 /// Snell-Descartes: 30 degrees from the normal in air into glass of index 1.5
@@ -318,5 +319,5 @@ fn glass() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::refract(refract)
 }
