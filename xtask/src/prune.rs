@@ -214,6 +214,7 @@ fn expr_attrs(expr: &Expr) -> &[Attribute] {
         Expr::Return(e) => &e.attrs,
         Expr::Path(e) => &e.attrs,
         Expr::Try(e) => &e.attrs,
+        Expr::Struct(e) => &e.attrs,
         _ => &[],
     }
 }
@@ -431,6 +432,15 @@ mod tests {
         assert_eq!(
             view(text, 2),
             "const ALL: &[u8] = &[\n    a::ONE,\n    b::TWO,\n];\n"
+        );
+    }
+
+    #[test]
+    fn a_gated_struct_element_goes_with_its_comma() {
+        let text = "const ALL: &[P] = &[\n    P { a: 1 },\n    #[cfg(feature = \"s2\")]\n    P { a: 2 },\n    #[cfg(feature = \"s3\")]\n    P { a: 3 },\n];\n";
+        assert_eq!(
+            view(text, 2),
+            "const ALL: &[P] = &[\n    P { a: 1 },\n    P { a: 2 },\n];\n"
         );
     }
 

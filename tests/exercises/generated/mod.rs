@@ -28,6 +28,11 @@ use crate::known::Outcome;
 use crate::say;
 use crate::words::{decimal, separator};
 
+/// The environment variable that leaves the generated inputs out, so that only the
+/// worked answers run: how `.ci/exercises` proves that a mistake passes them all
+/// and only the generated inputs catch it.
+const KNOWN_ONLY: &str = "RAYCOURSE_KNOWN_ONLY";
+
 /// How many inputs each exercise is tried on.
 const CASES: u32 = 400;
 
@@ -42,6 +47,9 @@ pub fn on_generated<S: Strategy>(
     inputs: S,
     compare: impl Fn(S::Value) -> Result<(), String>,
 ) -> Outcome {
+    if std::env::var_os(KNOWN_ONLY).is_some() {
+        return Ok(());
+    }
     let config = Config {
         cases: CASES,
         failure_persistence: None,

@@ -56,7 +56,7 @@ fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
             "une radiance négative ou NaN s'affiche en noir, 0\u{a0}: ramenez-la à 0 avant la puissance"
         ));
     }
-    let level = |x: Real| x.max(0.0).min(255.0);
+    let level = |x: Real| x.clamp(0.0, 255.0);
     let exact = level(radiance.powf(1.0 / gamma));
     let gave = gave as Real;
     // Several mistakes can give the same level: each that does is named.
