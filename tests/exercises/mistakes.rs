@@ -170,13 +170,7 @@ pub const MISTAKES: &[Mistake] = &[
     Mistake {
         exercise: "s1.4",
         what: "the cosine not clamped",
-        run: || {
-            generated::lambert(|light: &PointLight, point, normal: Vec3, albedo: Colour| {
-                let to_light = light.position - point;
-                let d2 = to_light.length_squared();
-                light.intensity / (4.0 * PI * d2) * normal.dot(to_light / d2.sqrt()) * albedo / PI
-            })
-        },
+        run: || lambert_with_cosine(|normal, to_light| normal.dot(to_light.normalize())),
         names: [
             "it gets no light, max(0, <N, l>)",
             "elle ne reçoit rien, max(0, <N, l>)",
@@ -185,13 +179,7 @@ pub const MISTAKES: &[Mistake] = &[
     Mistake {
         exercise: "s1.4",
         what: "l not normalised",
-        run: || {
-            generated::lambert(|light: &PointLight, point, normal: Vec3, albedo: Colour| {
-                let to_light = light.position - point;
-                let d2 = to_light.length_squared();
-                light.intensity / (4.0 * PI * d2) * normal.dot(to_light).max(0.0) * albedo / PI
-            })
-        },
+        run: || lambert_with_cosine(|normal, to_light| normal.dot(to_light).max(0.0)),
         names: [
             "l is the unit vector to the light",
             "l est le vecteur unitaire vers la source",
@@ -314,6 +302,17 @@ pub const MISTAKES: &[Mistake] = &[
 /// The image plane's `z` of the course's camera: `-H / (2 tan(alpha/2))`.
 fn plane(camera: &Camera) -> Real {
     -(camera.height as Real) / (2.0 * (camera.fov / 2.0).tan())
+}
+
+/// Lambert's shading, `I / (4 pi d^2) cos albedo / pi`, with the cosine a
+/// mistake computes from the normal and the vector to the light, run through its
+/// generated check.
+fn lambert_with_cosine(cosine: fn(Vec3, Vec3) -> Real) -> Outcome {
+    generated::lambert(|light: &PointLight, point, normal, albedo: Colour| {
+        let to_light = light.position - point;
+        let d2 = to_light.length_squared();
+        light.intensity / (4.0 * PI * d2) * cosine(normal, to_light) * albedo / PI
+    })
 }
 
 /// Both roots of the textbook's quadratic, near and far, if the line meets the

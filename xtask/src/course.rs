@@ -72,8 +72,7 @@ fn course_manifest(text: &str) -> Result<String, String> {
     Ok(doc.to_string())
 }
 
-/// The exercise crate's manifest `doc` with the course as a dev-dependency,
-/// compiled quickly.
+/// The exercise crate's manifest `doc` with the course as a dev-dependency.
 pub fn depend_on_course(doc: &mut DocumentMut) {
     let mut course = toml_edit::InlineTable::new();
     course.insert("package", "raycourse-course".into());
@@ -82,15 +81,6 @@ pub fn depend_on_course(doc: &mut DocumentMut) {
         doc["dev-dependencies"] = toml_edit::table();
     }
     doc["dev-dependencies"]["course"] = toml_edit::value(course);
-    // The course's functions run on a few hundred inputs and a few pixels: compiled
-    // unoptimised and without debugging information, the first `cargo test` is
-    // shorter, and the student's code, optimised, is what renders.
-    for profile in ["dev", "test"] {
-        let mut quick = Table::new();
-        quick["opt-level"] = toml_edit::value(0);
-        quick["debug"] = toml_edit::value(false);
-        doc["profile"][profile]["package"]["raycourse-course"] = Item::Table(quick);
-    }
 }
 
 #[cfg(test)]
@@ -119,8 +109,5 @@ mod tests {
         let course = doc["dev-dependencies"]["course"].as_inline_table().unwrap();
         assert_eq!(course.get("path").and_then(|p| p.as_str()), Some(FOLDER));
         assert!(doc["dependencies"].get("course").is_none());
-        let quick = &doc["profile"]["test"]["package"]["raycourse-course"];
-        assert_eq!(quick["opt-level"].as_integer(), Some(0));
-        assert_eq!(doc["profile"]["test"]["opt-level"].as_integer(), Some(3));
     }
 }

@@ -81,13 +81,7 @@ pub fn n(x: Real) -> String {
     } else if !x.is_finite() {
         format!("{x}")
     } else if (1e-3..1e6).contains(&x.abs()) {
-        let digits = (5 - x.abs().log10().floor() as i32).max(0) as usize;
-        let text = format!("{x:.digits$}");
-        if text.contains('.') {
-            text.trim_end_matches('0').trim_end_matches('.').to_owned()
-        } else {
-            text
-        }
+        significant(x, 6)
     } else {
         let text = format!("{x:.5e}");
         let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
@@ -98,7 +92,8 @@ pub fn n(x: Real) -> String {
 }
 
 /// Two numbers written with the fewest significant digits, six or more, that tell
-/// them apart (six when nothing does) (`2.03166e7` and `2.03166e7` become `20316612.95` and `20316613.04`).
+/// them apart (`2.03166e7` and `2.03166e7` become `20316612.95` and `20316613.04`),
+/// or as [`n`] writes them when nothing does.
 pub fn apart(a: Real, b: Real) -> (String, String) {
     for digits in 6..=17 {
         let (x, y) = (significant(a, digits), significant(b, digits));

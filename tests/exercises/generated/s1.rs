@@ -9,6 +9,7 @@ use raycourse::maths::{Colour, PI, Real, Vec3};
 
 use super::{apart, differs, n, near, near_vec, on_generated, ulps, v};
 use crate::known::Outcome;
+use crate::s1::sphere;
 use crate::say;
 
 /// An image side: small and odd ones often (1, 3, 5 ... where `W/2` is not an
@@ -206,13 +207,8 @@ fn plane_of(gave: Vec3, expected: Vec3) -> Option<Real> {
     (k.is_finite() && k > 0.0 && same_xy && other).then_some(theirs)
 }
 
-/// A sphere of white diffuse material, in the student's crate.
-fn sphere(centre: Vec3, radius: Real) -> Sphere {
-    crate::s1::sphere(centre, radius)
-}
-
-/// The same sphere in the course's crate.
-fn course_sphere(centre: Vec3, radius: Real) -> course::geometry::Sphere {
+/// The checks' white diffuse sphere (`crate::s1::sphere`) in the course's crate.
+pub fn course_sphere(centre: Vec3, radius: Real) -> course::geometry::Sphere {
     course::geometry::Sphere {
         centre,
         radius,

@@ -5,7 +5,7 @@ use proptest::prelude::*;
 use raycourse::geometry::{Hit, Ray};
 use raycourse::maths::{Real, Vec3};
 
-use super::s1::{direction, scale};
+use super::s1::{course_sphere, direction, scale};
 use super::{apart, differs, n, near_vec, on_generated, ulps, v};
 use crate::known::Outcome;
 use crate::say;
@@ -113,18 +113,6 @@ fn hits() -> impl Strategy<Value = (Vec3, Real, course::geometry::Hit)> {
             (centre, radius, ball.hit_at(&ray, t, 0))
         },
     )
-}
-
-/// The course's white diffuse sphere.
-fn course_sphere(centre: Vec3, radius: Real) -> course::geometry::Sphere {
-    course::geometry::Sphere {
-        centre,
-        radius,
-        material: course::materials::Material::Diffuse {
-            albedo: raycourse::maths::Colour::ONE,
-        },
-        emission: raycourse::maths::Colour::ZERO,
-    }
 }
 
 /// The student's copy of the course's hit.
