@@ -104,53 +104,20 @@ fn pixel_diagnosis(
     let tolerance = ulps(64.0) * expected.length();
     let x_right = (x - expected.x).abs() <= tolerance;
     let y_right = (y - expected.y).abs() <= tolerance;
-    let j = column;
     let i = h - 1 - row;
+    let from_top = row as Real - h as Real / 2.0 + 0.5;
     let mut why = vec![];
     if !x_right {
-        let off = x - expected.x;
-        why.push(if w % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
-            say!(
-                "the centre of pixel j is at x = j - W/2 + 1/2 for any W: here W = {w} is odd, so W/2 = {} (an integer division drops the half)",
-                "le centre du pixel j est en x = j - W/2 + 1/2 pour tout W\u{a0}: ici W = {w} est impair, donc W/2 = {} (une division entière perd la moitié)",
-                n(w as Real / 2.0)
-            )
-        } else if (off.abs() - 0.5).abs() < 1e-6 {
-            say!(
-                "the centre of pixel j is at x = j - W/2 + 1/2: the half pixel is off",
-                "le centre du pixel j est en x = j - W/2 + 1/2\u{a0}: le demi-pixel est faux"
-            )
-        } else {
-            say!(
-                "the centre of pixel j is at x = j - W/2 + 1/2 (here j = {j}, x = {}): yours is {} off",
-                "le centre du pixel j est en x = j - W/2 + 1/2 (ici j = {j}, x = {})\u{a0}: le vôtre est décalé de {}",
-                n(expected.x),
-                n(off)
-            )
-        });
+        why.push(column_rule(x - expected.x, w, column, expected.x));
     }
-    let from_top = row as Real - h as Real / 2.0 + 0.5;
     if !y_right {
-        let off = y - expected.y;
-        why.push(if (y - from_top).abs() < 1e-6 {
-            say!(
-                "rows count from the top of the image and y from the bottom: y = i - H/2 + 1/2 with i = H - 1 - row = {i}",
-                "les lignes se comptent depuis le haut de l'image et y depuis le bas\u{a0}: y = i - H/2 + 1/2 avec i = H - 1 - ligne = {i}"
-            )
-        } else if h % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
-            say!(
-                "the centre of row i is at y = i - H/2 + 1/2 for any H: here H = {h} is odd, so H/2 = {} (an integer division drops the half)",
-                "le centre de la ligne i est en y = i - H/2 + 1/2 pour tout H\u{a0}: ici H = {h} est impair, donc H/2 = {} (une division entière perd la moitié)",
-                n(h as Real / 2.0)
-            )
-        } else {
-            say!(
-                "the centre of row i = H - 1 - row = {i} is at y = i - H/2 + 1/2 = {}: yours is {} off",
-                "le centre de la ligne i = H - 1 - ligne = {i} est en y = i - H/2 + 1/2 = {}\u{a0}: le vôtre est décalé de {}",
-                n(expected.y),
-                n(off)
-            )
-        });
+        why.push(row_rule(
+            y - expected.y,
+            (y - from_top).abs() < 1e-6,
+            h,
+            i,
+            expected.y,
+        ));
     }
     // A half pixel or rows from the top explain the difference better than an
     // image plane at another distance, which any wrong x or y may look like.
@@ -161,6 +128,55 @@ fn pixel_diagnosis(
         return Some(plane_rule(theirs, -expected.z, (w, h, fov)));
     }
     (!why.is_empty()).then(|| why.join(&say!("; ", "\u{a0}; ")))
+}
+
+/// The rule of a pixel's x, `x = j - W/2 + 1/2`, when yours is `off` from the
+/// course's `x` in column `j` of an image `w` wide.
+fn column_rule(off: Real, w: u32, j: u32, x: Real) -> String {
+    if w % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
+        say!(
+            "the centre of pixel j is at x = j - W/2 + 1/2 for any W: here W = {w} is odd, so W/2 = {} (an integer division drops the half)",
+            "le centre du pixel j est en x = j - W/2 + 1/2 pour tout W\u{a0}: ici W = {w} est impair, donc W/2 = {} (une division entière perd la moitié)",
+            n(w as Real / 2.0)
+        )
+    } else if (off.abs() - 0.5).abs() < 1e-6 {
+        say!(
+            "the centre of pixel j is at x = j - W/2 + 1/2: the half pixel is off",
+            "le centre du pixel j est en x = j - W/2 + 1/2\u{a0}: le demi-pixel est faux"
+        )
+    } else {
+        say!(
+            "the centre of pixel j is at x = j - W/2 + 1/2 (here j = {j}, x = {}): yours is {} off",
+            "le centre du pixel j est en x = j - W/2 + 1/2 (ici j = {j}, x = {})\u{a0}: le vôtre est décalé de {}",
+            n(x),
+            n(off)
+        )
+    }
+}
+
+/// The rule of a pixel's y, `y = i - H/2 + 1/2` with `i = H - 1 - row`, when yours
+/// is `off` from the course's `y` (`from_top`: yours counts rows from the top) in
+/// row `i` of an image `h` high.
+fn row_rule(off: Real, from_top: bool, h: u32, i: u32, y: Real) -> String {
+    if from_top {
+        say!(
+            "rows count from the top of the image and y from the bottom: y = i - H/2 + 1/2 with i = H - 1 - row = {i}",
+            "les lignes se comptent depuis le haut de l'image et y depuis le bas\u{a0}: y = i - H/2 + 1/2 avec i = H - 1 - ligne = {i}"
+        )
+    } else if h % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
+        say!(
+            "the centre of row i is at y = i - H/2 + 1/2 for any H: here H = {h} is odd, so H/2 = {} (an integer division drops the half)",
+            "le centre de la ligne i est en y = i - H/2 + 1/2 pour tout H\u{a0}: ici H = {h} est impair, donc H/2 = {} (une division entière perd la moitié)",
+            n(h as Real / 2.0)
+        )
+    } else {
+        say!(
+            "the centre of row i = H - 1 - row = {i} is at y = i - H/2 + 1/2 = {}: yours is {} off",
+            "le centre de la ligne i = H - 1 - ligne = {i} est en y = i - H/2 + 1/2 = {}\u{a0}: le vôtre est décalé de {}",
+            n(y),
+            n(off)
+        )
+    }
 }
 
 /// The rule of the image plane's distance, when `gave` puts it at `theirs` rather
@@ -425,25 +441,10 @@ pub fn nearest_sphere(
     );
     let inputs = (direction(), prop::collection::vec(one, 1..6), scale());
     on_generated("Scene::nearest_sphere", inputs, |(d, spheres, size)| {
-        let across = d.any_orthonormal_vector();
-        let mut list = vec![];
-        for (along, off, radius, twin) in spheres {
-            let sphere = (size * (along * d + off * across), size * radius);
-            list.push(sphere);
-            if twin == 0 {
-                list.push(sphere);
-            }
-        }
-        let ray = Ray::new(Vec3::ZERO, d);
+        let list = along_the_ray(d, &spheres, size);
         let scene = scene(list.iter().map(|&(c, r)| sphere(c, r)).collect());
-        let course_scene = course::scene::Scene::new(
-            course::camera::Camera::new(Vec3::ZERO, 1.0, 1, 1),
-            list.iter().map(|&(c, r)| course_sphere(c, r)).collect(),
-            None,
-            course::scene::Settings::default(),
-        );
-        let gave = yours(&scene, &ray);
-        let expected = course_scene.nearest_sphere(&course::geometry::Ray::new(Vec3::ZERO, d));
+        let gave = yours(&scene, &Ray::new(Vec3::ZERO, d));
+        let expected = course_nearest(&list, d);
         let same = match (gave, expected) {
             (None, None) => true,
             (Some((t, i)), Some((e, j))) => {
@@ -454,46 +455,82 @@ pub fn nearest_sphere(
         if same {
             return Ok(());
         }
-        let listed: Vec<String> = list
-            .iter()
-            .enumerate()
-            .map(|(i, (c, r))| {
-                say!(
-                    "{i}: radius {} at {}",
-                    "{i}\u{a0}: rayon {} en {}",
-                    n(*r),
-                    v(*c)
-                )
-            })
-            .collect();
-        let case = say!(
-            "spheres {}, the ray from the origin along {}",
-            "sphères {}, le rayon issu de l'origine selon {}",
-            listed.join(&say!("; ", "\u{a0}; ")),
-            v(d)
-        );
-        let show = |hit: Option<(Real, usize)>| {
-            hit.map_or(say!("no hit", "aucune intersection"), |(t, i)| {
-                say!("sphere {i} at t = {}", "sphère {i} en t = {}", n(t))
-            })
-        };
-        let why = match (gave, expected) {
-            (Some((t, i)), Some((e, j)))
-                if i > j && list[i] == list[j] && (t - e).abs() <= 1e-9 * e.abs() =>
-            {
-                Some(say!(
-                    "spheres {j} and {i} are met at the same distance: the first of the list wins (a later sphere replaces the nearest only when strictly nearer, t < t_nearest)",
-                    "les sphères {j} et {i} sont rencontrées à la même distance\u{a0}: la première de la liste l'emporte (une sphère plus loin dans la liste ne remplace la plus proche que si elle est strictement plus proche, t < t_plus_proche)"
-                ))
-            }
-            (Some((t, _)), Some((e, _))) if t > e => Some(say!(
-                "the nearest hit is the smallest t of all the spheres met, not the first met in the list",
-                "l'intersection la plus proche est le plus petit t de toutes les sphères rencontrées, pas la première rencontrée dans la liste"
-            )),
-            _ => None,
-        };
-        Err(differs(&case, &show(gave), &show(expected), why))
+        Err(nearest_differs(&list, d, gave, expected))
     })
+}
+
+/// Spheres `(centre, radius)` placed `along` the ray from the origin along `d` and
+/// `off` it, in units of `size`; a `twin` of 0 lists the same sphere twice.
+fn along_the_ray(d: Vec3, spheres: &[(Real, Real, Real, u8)], size: Real) -> Vec<(Vec3, Real)> {
+    let across = d.any_orthonormal_vector();
+    let mut list = vec![];
+    for &(along, off, radius, twin) in spheres {
+        let sphere = (size * (along * d + off * across), size * radius);
+        list.push(sphere);
+        if twin == 0 {
+            list.push(sphere);
+        }
+    }
+    list
+}
+
+/// The course's nearest hit among `list` along `d` from the origin.
+fn course_nearest(list: &[(Vec3, Real)], d: Vec3) -> Option<(Real, usize)> {
+    let scene = course::scene::Scene::new(
+        course::camera::Camera::new(Vec3::ZERO, 1.0, 1, 1),
+        list.iter().map(|&(c, r)| course_sphere(c, r)).collect(),
+        None,
+        course::scene::Settings::default(),
+    );
+    scene.nearest_sphere(&course::geometry::Ray::new(Vec3::ZERO, d))
+}
+
+/// The message of a nearest hit that differs: the spheres, both hits and the rule.
+fn nearest_differs(
+    list: &[(Vec3, Real)],
+    d: Vec3,
+    gave: Option<(Real, usize)>,
+    expected: Option<(Real, usize)>,
+) -> String {
+    let listed: Vec<String> = list
+        .iter()
+        .enumerate()
+        .map(|(i, (c, r))| {
+            say!(
+                "{i}: radius {} at {}",
+                "{i}\u{a0}: rayon {} en {}",
+                n(*r),
+                v(*c)
+            )
+        })
+        .collect();
+    let case = say!(
+        "spheres {}, the ray from the origin along {}",
+        "sphères {}, le rayon issu de l'origine selon {}",
+        listed.join(&say!("; ", "\u{a0}; ")),
+        v(d)
+    );
+    let show = |hit: Option<(Real, usize)>| {
+        hit.map_or(say!("no hit", "aucune intersection"), |(t, i)| {
+            say!("sphere {i} at t = {}", "sphère {i} en t = {}", n(t))
+        })
+    };
+    let why = match (gave, expected) {
+        (Some((t, i)), Some((e, j)))
+            if i > j && list[i] == list[j] && (t - e).abs() <= 1e-9 * e.abs() =>
+        {
+            Some(say!(
+                "spheres {j} and {i} are met at the same distance: the first of the list wins (a later sphere replaces the nearest only when strictly nearer, t < t_nearest)",
+                "les sphères {j} et {i} sont rencontrées à la même distance\u{a0}: la première de la liste l'emporte (une sphère plus loin dans la liste ne remplace la plus proche que si elle est strictement plus proche, t < t_plus_proche)"
+            ))
+        }
+        (Some((t, _)), Some((e, _))) if t > e => Some(say!(
+            "the nearest hit is the smallest t of all the spheres met, not the first met in the list",
+            "l'intersection la plus proche est le plus petit t de toutes les sphères rencontrées, pas la première rencontrée dans la liste"
+        )),
+        _ => None,
+    };
+    differs(&case, &show(gave), &show(expected), why)
 }
 
 /// A scene of `spheres` in the student's crate, with no light.
@@ -566,15 +603,19 @@ fn lambert_diagnosis(gave: Colour, expected: Colour, cos: Real, d: Real) -> Opti
             n(cos)
         ));
     }
-    let channel = if expected.x.abs() >= expected.y.abs().max(expected.z.abs()) {
-        0
-    } else if expected.y.abs() >= expected.z.abs() {
-        1
-    } else {
-        2
-    };
+    let channel = expected.abs().max_position();
     let ratio = gave[channel] / expected[channel];
-    let rules: [(Real, String); 6] = [
+    let rules = lambert_rules(cos, d);
+    rules
+        .into_iter()
+        .find(|(r, _)| (ratio / r - 1.0).abs() < 1e-4)
+        .map(|(_, why)| why)
+}
+
+/// The ratios of a wrong Lambert shading to the right one that name a mistake,
+/// with the rule each breaks: `cos` is `<N, l>`, `d` the distance to the light.
+fn lambert_rules(cos: Real, d: Real) -> [(Real, String); 6] {
+    [
         (
             PI,
             say!(
@@ -614,9 +655,5 @@ fn lambert_diagnosis(gave: Colour, expected: Colour, cos: Real, d: Real) -> Opti
             1.0 / PI,
             say!("1/pi is counted twice", "le 1/pi est compté deux fois"),
         ),
-    ];
-    rules
-        .into_iter()
-        .find(|(r, _)| (ratio / r - 1.0).abs() < 1e-4)
-        .map(|(_, why)| why)
+    ]
 }

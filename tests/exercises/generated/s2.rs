@@ -151,41 +151,9 @@ pub fn spawn(yours: impl Fn(&Hit, Vec3) -> Ray) -> Outcome {
                 outward
             };
             let ball = course_sphere(centre, radius);
-            for (going_out, d) in [(true, out), (false, -out)] {
+            for d in [out, -out] {
                 let ray = yours(&student_hit(&hit), d);
-                let again = ball.intersect(&course::geometry::Ray::new(ray.origin, ray.direction));
-                let chord = 2.0 * radius * d.dot(outward).abs();
-                let reach = 1e-3 * radius + 4.0 * hit.offset.length();
-                let moved = ray.origin.distance(hit.point);
-                let fault = if !near_vec(ray.direction, d, ulps(8.0)) {
-                    Some(say!(
-                        "the new ray keeps the direction it is given",
-                        "le nouveau rayon garde la direction donnée"
-                    ))
-                } else if going_out && again.is_some() {
-                    Some(say!(
-                        "leaving outwards it meets its own sphere again at t = {} (shadow acne): push the origin off the surface by the error bound, along N on the side it leaves by",
-                        "en sortant il rencontre de nouveau sa propre sphère en t = {} (acné d'ombre)\u{a0}: décalez l'origine hors de la surface de la borne d'erreur, selon N du côté où il part",
-                        n(again.unwrap_or(0.0))
-                    ))
-                } else if !going_out && again.is_none_or(|t| t < 0.5 * chord) {
-                    Some(say!(
-                        "going in it should meet the far side, about {} away, and meets {}: the origin must be pushed to the side the ray leaves by, here inwards (-N)",
-                        "en entrant il devrait rencontrer le côté opposé, à environ {}, et rencontre {}\u{a0}: l'origine doit être décalée du côté où part le rayon, ici vers l'intérieur (-N)",
-                        n(chord),
-                        again.map_or(say!("nothing", "rien"), |t| format!("t = {}", n(t)))
-                    ))
-                } else if moved > reach {
-                    Some(say!(
-                        "the origin moved {} from the hit point, more than a thousandth of the radius {}: the offset follows the point's error bound, not a fixed epsilon",
-                        "l'origine s'est éloignée de {} du point d'intersection, plus d'un millième du rayon {}\u{a0}: le décalage suit la borne d'erreur du point, pas un epsilon fixe",
-                        n(moved),
-                        n(radius)
-                    ))
-                } else {
-                    None
-                };
-                if let Some(why) = fault {
+                if let Some(why) = spawn_fault(&hit, &ball, &ray, d) {
                     let case = say!(
                         "the hit point {} with normal {} on a sphere of radius {} at {}, the new ray along {}",
                         "le point d'intersection {} de normale {} sur une sphère de rayon {} en {}, le nouveau rayon selon {}",
@@ -205,6 +173,50 @@ pub fn spawn(yours: impl Fn(&Hit, Vec3) -> Ray) -> Outcome {
             Ok(())
         },
     )
+}
+
+/// What a new ray `ray` from `hit`, given the direction `d`, breaks of spawn's
+/// promises on the sphere `ball`, if anything.
+fn spawn_fault(
+    hit: &course::geometry::Hit,
+    ball: &course::geometry::Sphere,
+    ray: &Ray,
+    d: Vec3,
+) -> Option<String> {
+    let (radius, outward) = (ball.radius, hit.normal);
+    let going_out = d.dot(outward) > 0.0;
+    let again = ball.intersect(&course::geometry::Ray::new(ray.origin, ray.direction));
+    let chord = 2.0 * radius * d.dot(outward).abs();
+    let reach = 1e-3 * radius + 4.0 * hit.offset.length();
+    let moved = ray.origin.distance(hit.point);
+    if !near_vec(ray.direction, d, ulps(8.0)) {
+        Some(say!(
+            "the new ray keeps the direction it is given",
+            "le nouveau rayon garde la direction donnée"
+        ))
+    } else if going_out && again.is_some() {
+        Some(say!(
+            "leaving outwards it meets its own sphere again at t = {} (shadow acne): push the origin off the surface by the error bound, along N on the side it leaves by",
+            "en sortant il rencontre de nouveau sa propre sphère en t = {} (acné d'ombre)\u{a0}: décalez l'origine hors de la surface de la borne d'erreur, selon N du côté où il part",
+            n(again.unwrap_or(0.0))
+        ))
+    } else if !going_out && again.is_none_or(|t| t < 0.5 * chord) {
+        Some(say!(
+            "going in it should meet the far side, about {} away, and meets {}: the origin must be pushed to the side the ray leaves by, here inwards (-N)",
+            "en entrant il devrait rencontrer le côté opposé, à environ {}, et rencontre {}\u{a0}: l'origine doit être décalée du côté où part le rayon, ici vers l'intérieur (-N)",
+            n(chord),
+            again.map_or(say!("nothing", "rien"), |t| format!("t = {}", n(t)))
+        ))
+    } else if moved > reach {
+        Some(say!(
+            "the origin moved {} from the hit point, more than a thousandth of the radius {}: the offset follows the point's error bound, not a fixed epsilon",
+            "l'origine s'est éloignée de {} du point d'intersection, plus d'un millième du rayon {}\u{a0}: le décalage suit la borne d'erreur du point, pas un epsilon fixe",
+            n(moved),
+            n(radius)
+        ))
+    } else {
+        None
+    }
 }
 
 /// Exercise s2.3 on generated hits and lights, from a hundredth of the radius away
@@ -231,29 +243,8 @@ pub fn spawn_towards(yours: impl Fn(&Hit, Vec3) -> (Ray, Real)) -> Outcome {
             if direction_right && distance_right {
                 return Ok(());
             }
-            let why = if !direction_right
-                && near_vec(ray.direction.normalize(), towards, ulps(64.0))
-            {
-                say!(
-                    "the direction is a unit vector: divide the vector to the light by its length",
-                    "la direction est un vecteur unitaire\u{a0}: divisez le vecteur vers la source par sa longueur"
-                )
-            } else if !direction_right {
-                say!(
-                    "the direction is the unit vector from the hit point to the light",
-                    "la direction est le vecteur unitaire du point d'intersection vers la source"
-                )
-            } else if (distance - hit.point.distance(light)).abs() <= ulps(64.0) * from_origin {
-                say!(
-                    "the distance is the light's from the ray's own origin, which the offset moved, not from the hit point",
-                    "la distance est celle de la source depuis l'origine du rayon, que le décalage a déplacée, pas depuis le point d'intersection"
-                )
-            } else {
-                say!(
-                    "the distance is |light - origin|, the length from the ray's origin to the light",
-                    "la distance est |source - origine|, la longueur de l'origine du rayon à la source"
-                )
-            };
+            let from_point = hit.point.distance(light);
+            let why = towards_rule(ray.direction, towards, (distance, from_origin, from_point));
             let case = say!(
                 "the hit point {} with normal {}, a light at {}",
                 "le point d'intersection {} de normale {}, une source en {}",
@@ -275,6 +266,38 @@ pub fn spawn_towards(yours: impl Fn(&Hit, Vec3) -> (Ray, Real)) -> Outcome {
             Err(differs(&case, &gave, &expected, Some(why)))
         },
     )
+}
+
+/// The rule a shadow ray breaks: its `direction` is not the unit vector `towards`
+/// the light, or its `distance` is not `from_origin`, the light's distance from the
+/// ray's origin (`from_point`: from the hit point).
+fn towards_rule(
+    direction: Vec3,
+    towards: Vec3,
+    (distance, from_origin, from_point): (Real, Real, Real),
+) -> String {
+    let direction_right = near_vec(direction, towards, ulps(64.0));
+    if !direction_right && near_vec(direction.normalize(), towards, ulps(64.0)) {
+        say!(
+            "the direction is a unit vector: divide the vector to the light by its length",
+            "la direction est un vecteur unitaire\u{a0}: divisez le vecteur vers la source par sa longueur"
+        )
+    } else if !direction_right {
+        say!(
+            "the direction is the unit vector from the hit point to the light",
+            "la direction est le vecteur unitaire du point d'intersection vers la source"
+        )
+    } else if (distance - from_point).abs() <= ulps(64.0) * from_origin {
+        say!(
+            "the distance is the light's from the ray's own origin, which the offset moved, not from the hit point",
+            "la distance est celle de la source depuis l'origine du rayon, que le décalage a déplacée, pas depuis le point d'intersection"
+        )
+    } else {
+        say!(
+            "the distance is |light - origin|, the length from the ray's origin to the light",
+            "la distance est |source - origine|, la longueur de l'origine du rayon à la source"
+        )
+    }
 }
 
 /// A unit normal and a unit direction meeting it from its side, grazing ones and
@@ -340,52 +363,14 @@ pub fn refract(yours: impl Fn(Vec3, Vec3, Real) -> Option<Vec3>) -> Outcome {
     ];
     let inputs =
         (towards_surface(), eta).prop_filter("not at the critical angle", |((normal, d), eta)| {
-            let sin2 = eta * eta * (1.0 - d.dot(*normal).powi(2));
-            (sin2 - 1.0).abs() > Real::EPSILON.sqrt()
+            (sin2_transmitted(*d, *normal, *eta) - 1.0).abs() > Real::EPSILON.sqrt()
         });
     on_generated("refract", inputs, |((normal, d), eta)| {
         let gave = yours(d, normal, eta);
         let expected = course::materials::optics::refract(d, normal, eta);
-        let tolerance = Real::EPSILON.sqrt();
-        let same = match (gave, expected) {
-            (None, None) => true,
-            (Some(g), Some(e)) => (g - e).length() <= tolerance,
-            _ => false,
-        };
-        if same {
+        if same_refraction(gave, expected) {
             return Ok(());
         }
-        let sin2 = eta * eta * (1.0 - d.dot(normal).powi(2));
-        let inverse = course::materials::optics::refract(d, normal, 1.0 / eta);
-        let as_inverse = match (gave, inverse) {
-            (None, None) => true,
-            (Some(g), Some(i)) => (g - i).length() <= tolerance,
-            _ => false,
-        };
-        let why = match (gave, expected) {
-            _ if as_inverse => say!(
-                "eta is n1 / n2, the index the ray leaves over the index it enters; yours used n2 / n1",
-                "eta vaut n1 / n2, l'indice que le rayon quitte sur celui où il entre\u{a0}; le vôtre a pris n2 / n1"
-            ),
-            (Some(_), None) => say!(
-                "total internal reflection: eta^2 sin^2(theta_1) = {} > 1, so there is no refracted ray",
-                "réflexion totale interne\u{a0}: eta^2 sin^2(theta_1) = {} > 1, donc pas de rayon réfracté",
-                n(sin2)
-            ),
-            (None, Some(_)) => say!(
-                "eta^2 sin^2(theta_1) = {} <= 1: the ray refracts",
-                "eta^2 sin^2(theta_1) = {} <= 1\u{a0}: le rayon est réfracté",
-                n(sin2)
-            ),
-            (Some(g), Some(e)) if (g.dot(normal) + e.dot(normal)).abs() <= tolerance => say!(
-                "the refracted ray goes on through the surface: its normal part is -cos(theta_2) N",
-                "le rayon réfracté traverse la surface\u{a0}: sa partie normale vaut -cos(theta_2) N"
-            ),
-            _ => say!(
-                "t = eta (d - (d . N) N) - sqrt(1 - eta^2 sin^2(theta_1)) N",
-                "t = eta (d - (d . N) N) - sqrt(1 - eta^2 sin^2(theta_1)) N"
-            ),
-        };
         let show = |t: Option<Vec3>| {
             t.map_or(
                 say!(
@@ -402,6 +387,58 @@ pub fn refract(yours: impl Fn(Vec3, Vec3, Real) -> Option<Vec3>) -> Outcome {
             v(normal),
             n(eta)
         );
+        let why = refract_rule((d, normal, eta), gave, expected);
         Err(differs(&case, &show(gave), &show(expected), Some(why)))
     })
+}
+
+/// `eta^2 sin^2(theta_1)`, which is `sin^2(theta_2)` where the ray refracts.
+fn sin2_transmitted(d: Vec3, normal: Vec3, eta: Real) -> Real {
+    eta * eta * (1.0 - d.dot(normal).powi(2))
+}
+
+/// Whether two refracted directions agree: both absent (total internal
+/// reflection), or within `sqrt(epsilon)`.
+fn same_refraction(a: Option<Vec3>, b: Option<Vec3>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(a), Some(b)) => (a - b).length() <= Real::EPSILON.sqrt(),
+        _ => false,
+    }
+}
+
+/// The rule of refraction that `gave` breaks, `expected` being the course's.
+fn refract_rule(
+    (d, normal, eta): (Vec3, Vec3, Real),
+    gave: Option<Vec3>,
+    expected: Option<Vec3>,
+) -> String {
+    let sin2 = sin2_transmitted(d, normal, eta);
+    let inverse = course::materials::optics::refract(d, normal, 1.0 / eta);
+    match (gave, expected) {
+        _ if same_refraction(gave, inverse) => say!(
+            "eta is n1 / n2, the index the ray leaves over the index it enters; yours used n2 / n1",
+            "eta vaut n1 / n2, l'indice que le rayon quitte sur celui où il entre\u{a0}; le vôtre a pris n2 / n1"
+        ),
+        (Some(_), None) => say!(
+            "total internal reflection: eta^2 sin^2(theta_1) = {} > 1, so there is no refracted ray",
+            "réflexion totale interne\u{a0}: eta^2 sin^2(theta_1) = {} > 1, donc pas de rayon réfracté",
+            n(sin2)
+        ),
+        (None, Some(_)) => say!(
+            "eta^2 sin^2(theta_1) = {} <= 1: the ray refracts",
+            "eta^2 sin^2(theta_1) = {} <= 1\u{a0}: le rayon est réfracté",
+            n(sin2)
+        ),
+        (Some(g), Some(e)) if (g.dot(normal) + e.dot(normal)).abs() <= Real::EPSILON.sqrt() => {
+            say!(
+                "the refracted ray goes on through the surface: its normal part is -cos(theta_2) N",
+                "le rayon réfracté traverse la surface\u{a0}: sa partie normale vaut -cos(theta_2) N"
+            )
+        }
+        _ => say!(
+            "t = eta (d - (d . N) N) - sqrt(1 - eta^2 sin^2(theta_1)) N",
+            "t = eta (d - (d . N) N) - sqrt(1 - eta^2 sin^2(theta_1)) N"
+        ),
+    }
 }
