@@ -318,11 +318,7 @@ fn check_mistakes(sessions: u32, chosen: &dyn Fn(&str) -> bool) -> (u32, u32) {
     let no_markers = HashMap::new();
     for session in 1..=sessions {
         let name = format!("mistakes_s{session}");
-        let prefix = format!("s{session}.");
-        let any = crate::mistakes::MISTAKES
-            .iter()
-            .any(|m| m.exercise.starts_with(&prefix));
-        if !any || !chosen(&name) {
+        if crate::mistakes::catalogue(session).is_empty() || !chosen(&name) {
             continue;
         }
         let verdict = isolation::verdict_of(&name);

@@ -47,11 +47,22 @@ pub fn on_generated<S: Strategy>(
     inputs: S,
     compare: impl Fn(S::Value) -> Result<(), String>,
 ) -> Outcome {
+    on_generated_cases(what, CASES, inputs, compare)
+}
+
+/// [`on_generated`] on `cases` inputs: fewer for the checks whose every input
+/// costs thousands of samples.
+pub fn on_generated_cases<S: Strategy>(
+    what: &str,
+    cases: u32,
+    inputs: S,
+    compare: impl Fn(S::Value) -> Result<(), String>,
+) -> Outcome {
     if std::env::var_os(KNOWN_ONLY).is_some() {
         return Ok(());
     }
     let config = Config {
-        cases: CASES,
+        cases,
         failure_persistence: None,
         max_shrink_iters: 4096,
         ..Config::default()

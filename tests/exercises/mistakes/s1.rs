@@ -1,8 +1,5 @@
-//! The diagnoses, proved: each mistake of this catalogue, written as a student
-//! might, is run through its exercise's generated check, which must fail and name
-//! the rule the mistake breaks. The course's crate runs them as the checklist's
-//! last lines (`mistakes_sN`); a student's exercise crate, whose `course` is a crate
-//! of its own, does not.
+//! Session 1's mistakes: the camera ray, the sphere tests, the nearest hit,
+//! Lambert.
 
 use raycourse::camera::Camera;
 use raycourse::geometry::{Ray, Sphere};
@@ -10,25 +7,11 @@ use raycourse::lights::PointLight;
 use raycourse::maths::{Colour, PI, Real, Vec3};
 use raycourse::scene::Scene;
 
+use super::Mistake;
 use crate::generated;
 use crate::known::Outcome;
-use crate::say;
 
-/// A mistake: its exercise, what it gets wrong, the generated check with the
-/// mistaken function in place of the student's, and what the failure must say (in
-/// English and in French).
-pub struct Mistake {
-    /// The exercise, such as `s1.1`.
-    pub exercise: &'static str,
-    /// The mistake, in a few words.
-    pub what: &'static str,
-    /// The generated check run on the mistaken function.
-    pub run: fn() -> Outcome,
-    /// Words the failure's message must hold: `[english, french]`.
-    pub names: [&'static str; 2],
-}
-
-/// The catalogue, in the course's order.
+/// Session 1's mistakes.
 pub const MISTAKES: &[Mistake] = &[
     Mistake {
         exercise: "s1.1",
@@ -185,118 +168,6 @@ pub const MISTAKES: &[Mistake] = &[
             "l est le vecteur unitaire vers la source",
         ],
     },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.1",
-        what: "levels rounded down",
-        run: || {
-            generated::display(|radiance, gamma| {
-                radiance.max(0.0).powf(1.0 / gamma).min(255.0) as u8
-            })
-        },
-        names: [
-            "rounded to the nearest, not down",
-            "arrondi au plus proche, pas par défaut",
-        ],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.1",
-        what: "gamma fixed at 2.2",
-        run: || generated::display(|radiance, _| raycourse::render::film::display(radiance, 2.2)),
-        names: ["use the gamma given", "utilisez le gamma donné"],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.2",
-        what: "a fixed epsilon of 1e-4",
-        run: || generated::spawn(|hit, direction| hit.spawn_with_epsilon(direction, 1e-4)),
-        names: ["not a fixed epsilon", "pas un epsilon fixe"],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.2",
-        what: "the origin always pushed outwards",
-        run: || {
-            generated::spawn(|hit, direction| Ray::new(hit.spawn(hit.normal).origin, direction))
-        },
-        names: ["here inwards (-N)", "ici vers l'intérieur (-N)"],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.3",
-        what: "the distance from the hit point",
-        run: || {
-            generated::spawn_towards(|hit, light| {
-                (
-                    hit.spawn((light - hit.point).normalize()),
-                    hit.point.distance(light),
-                )
-            })
-        },
-        names: [
-            "not from the hit point",
-            "pas depuis le point d'intersection",
-        ],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.3",
-        what: "the direction not normalised",
-        run: || {
-            generated::spawn_towards(|hit, light| {
-                let ray = hit.spawn((light - hit.point).normalize());
-                (
-                    Ray {
-                        origin: ray.origin,
-                        direction: light - hit.point,
-                    },
-                    ray.origin.distance(light),
-                )
-            })
-        },
-        names: [
-            "divide the vector to the light by its length",
-            "divisez le vecteur vers la source par sa longueur",
-        ],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.4",
-        what: "the normal part subtracted once",
-        run: || generated::reflect(|d, normal| d - d.dot(normal) * normal),
-        names: [
-            "subtracted twice, it turns around",
-            "retranchée deux fois, elle se retourne",
-        ],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.5",
-        what: "eta upside down",
-        run: || {
-            generated::refract(|d, normal, eta| {
-                raycourse::materials::optics::refract(d, normal, 1.0 / eta)
-            })
-        },
-        names: ["eta is n1 / n2", "eta vaut n1 / n2"],
-    },
-    #[cfg(feature = "s2")]
-    Mistake {
-        exercise: "s2.5",
-        what: "no total internal reflection",
-        run: || {
-            generated::refract(|d, normal, eta| {
-                let parallel = d - d.dot(normal) * normal;
-                let cos_t = (1.0 - eta * eta * parallel.length_squared()).abs().sqrt();
-                Some(eta * parallel - cos_t * normal)
-            })
-        },
-        names: [
-            "total internal reflection: eta^2",
-            "réflexion totale interne\u{a0}: eta^2",
-        ],
-    },
 ];
 
 /// The image plane's `z` of the course's camera: `-H / (2 tan(alpha/2))`.
@@ -325,38 +196,4 @@ fn roots(sphere: &Sphere, ray: &Ray) -> (Option<Real>, Option<Real>) {
         return (None, None);
     }
     (Some(-sd - delta.sqrt()), Some(-sd + delta.sqrt()))
-}
-
-/// The checklist's line for the mistakes of session `session`: each must fail its
-/// generated check and name its rule.
-pub fn check_session(session: u32) -> Outcome {
-    let prefix = format!("s{session}.");
-    for mistake in MISTAKES.iter().filter(|m| m.exercise.starts_with(&prefix)) {
-        let [english, french] = mistake.names;
-        let words = if crate::words::french() {
-            french
-        } else {
-            english
-        };
-        match (mistake.run)() {
-            Ok(()) => {
-                return Err(say!(
-                    "the mistake \"{}\" of exercise {} passes its generated check",
-                    "l'erreur «\u{a0}{}\u{a0}» de l'exercice {} passe sa vérification générée",
-                    mistake.what,
-                    mistake.exercise
-                ));
-            }
-            Err(why) if !why.contains(words) => {
-                return Err(say!(
-                    "the mistake \"{}\" of exercise {} fails without naming its rule (\"{words}\"): {why}",
-                    "l'erreur «\u{a0}{}\u{a0}» de l'exercice {} échoue sans nommer sa règle («\u{a0}{words}\u{a0}»)\u{a0}: {why}",
-                    mistake.what,
-                    mistake.exercise
-                ));
-            }
-            Err(_) => {}
-        }
-    }
-    Ok(())
 }

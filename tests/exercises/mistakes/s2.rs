@@ -1,0 +1,113 @@
+//! Session 2's mistakes: gamma, spawning rays, reflection and refraction.
+
+use raycourse::geometry::Ray;
+
+use super::Mistake;
+use crate::generated;
+
+/// Session 2's mistakes.
+pub const MISTAKES: &[Mistake] = &[
+    Mistake {
+        exercise: "s2.1",
+        what: "levels rounded down",
+        run: || {
+            generated::display(|radiance, gamma| {
+                radiance.max(0.0).powf(1.0 / gamma).min(255.0) as u8
+            })
+        },
+        names: [
+            "rounded to the nearest, not down",
+            "arrondi au plus proche, pas par défaut",
+        ],
+    },
+    Mistake {
+        exercise: "s2.1",
+        what: "gamma fixed at 2.2",
+        run: || generated::display(|radiance, _| raycourse::render::film::display(radiance, 2.2)),
+        names: ["use the gamma given", "utilisez le gamma donné"],
+    },
+    Mistake {
+        exercise: "s2.2",
+        what: "a fixed epsilon of 1e-4",
+        run: || generated::spawn(|hit, direction| hit.spawn_with_epsilon(direction, 1e-4)),
+        names: ["not a fixed epsilon", "pas un epsilon fixe"],
+    },
+    Mistake {
+        exercise: "s2.2",
+        what: "the origin always pushed outwards",
+        run: || {
+            generated::spawn(|hit, direction| Ray::new(hit.spawn(hit.normal).origin, direction))
+        },
+        names: ["here inwards (-N)", "ici vers l'intérieur (-N)"],
+    },
+    Mistake {
+        exercise: "s2.3",
+        what: "the distance from the hit point",
+        run: || {
+            generated::spawn_towards(|hit, light| {
+                (
+                    hit.spawn((light - hit.point).normalize()),
+                    hit.point.distance(light),
+                )
+            })
+        },
+        names: [
+            "not from the hit point",
+            "pas depuis le point d'intersection",
+        ],
+    },
+    Mistake {
+        exercise: "s2.3",
+        what: "the direction not normalised",
+        run: || {
+            generated::spawn_towards(|hit, light| {
+                let ray = hit.spawn((light - hit.point).normalize());
+                (
+                    Ray {
+                        origin: ray.origin,
+                        direction: light - hit.point,
+                    },
+                    ray.origin.distance(light),
+                )
+            })
+        },
+        names: [
+            "divide the vector to the light by its length",
+            "divisez le vecteur vers la source par sa longueur",
+        ],
+    },
+    Mistake {
+        exercise: "s2.4",
+        what: "the normal part subtracted once",
+        run: || generated::reflect(|d, normal| d - d.dot(normal) * normal),
+        names: [
+            "subtracted twice, it turns around",
+            "retranchée deux fois, elle se retourne",
+        ],
+    },
+    Mistake {
+        exercise: "s2.5",
+        what: "eta upside down",
+        run: || {
+            generated::refract(|d, normal, eta| {
+                raycourse::materials::optics::refract(d, normal, 1.0 / eta)
+            })
+        },
+        names: ["eta is n1 / n2", "eta vaut n1 / n2"],
+    },
+    Mistake {
+        exercise: "s2.5",
+        what: "no total internal reflection",
+        run: || {
+            generated::refract(|d, normal, eta| {
+                let parallel = d - d.dot(normal) * normal;
+                let cos_t = (1.0 - eta * eta * parallel.length_squared()).abs().sqrt();
+                Some(eta * parallel - cos_t * normal)
+            })
+        },
+        names: [
+            "total internal reflection: eta^2",
+            "réflexion totale interne\u{a0}: eta^2",
+        ],
+    },
+];
