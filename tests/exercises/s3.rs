@@ -8,6 +8,7 @@ use raycourse::maths::sampling::{sample_cosine_hemisphere, sample_gaussian};
 use raycourse::maths::{Colour, PI, Real, Vec3};
 
 use crate::checklist::Exercise;
+use crate::generated;
 use crate::known::{Outcome, close, close_vec, ensure, grid_mean, num, vec};
 use crate::s1::scene;
 use crate::say;
@@ -100,7 +101,8 @@ fn cosine_direction() -> Outcome {
     close(&mean_of("cos^2(theta)"), z2, 0.5, 0.01)?;
     close(&mean_of("x"), x, 0.0, 0.01)?;
     close(&mean_of("y"), y, 0.0, 0.01)?;
-    close(&mean_of("x^2"), x2, 0.25, 0.01)
+    close(&mean_of("x^2"), x2, 0.25, 0.01)?;
+    generated::cosine_direction(sample_cosine_hemisphere)
 }
 
 /// `the mean of x`, in the checklist's language.
@@ -146,7 +148,7 @@ fn frame() -> Outcome {
         }
         close(&format!("{what}{colon} T1 . T2"), f.t1.dot(f.t2), 0.0, 1e-5)?;
     }
-    Ok(())
+    generated::frame(Frame::new)
 }
 
 /// A furnace with a known answer: inside a sphere of radius 10 and albedo 0.5, a
@@ -174,7 +176,10 @@ fn indirect_bounce() -> Outcome {
         .facing_the_ray();
     bounce_start(&mut tracer, &floor)?;
     bounce_weight(&mut tracer, &floor)?;
-    bounces_passed_on(&mut tracer, &floor)
+    bounces_passed_on(&mut tracer, &floor)?;
+    generated::indirect_light(|tracer, hit, albedo, bounces| {
+        tracer.indirect_light(hit, albedo, bounces)
+    })
 }
 
 /// The albedo of the furnace's checks.
@@ -250,7 +255,7 @@ fn bounces_passed_on(tracer: &mut Tracer, floor: &Hit) -> Outcome {
 
 /// What a bounce that brings back `ratio` times the right light most likely got
 /// wrong in its weight.
-fn weight_hint(ratio: Real) -> String {
+pub fn weight_hint(ratio: Real) -> String {
     let near = |target: Real| (ratio / target - 1.0).abs() < 0.03;
     if near(2.0 / 3.0) {
         say!(
@@ -313,5 +318,5 @@ fn gaussian() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::gaussian(sample_gaussian)
 }

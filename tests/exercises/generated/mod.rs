@@ -15,10 +15,16 @@
 mod s1;
 #[cfg(feature = "s2")]
 mod s2;
+#[cfg(feature = "s3")]
+mod s3;
+#[cfg(feature = "s3")]
+mod sampling;
 
 pub use s1::*;
 #[cfg(feature = "s2")]
 pub use s2::*;
+#[cfg(feature = "s3")]
+pub use s3::*;
 
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
@@ -78,6 +84,20 @@ pub fn on_generated_cases<S: Strategy>(
         )),
         Err(TestError::Abort(why)) => Err(why.message().to_owned()),
     }
+}
+
+/// Runs `check`, a sampler's test on generated numbers, unless only the worked
+/// answers are to run; a failure is prefixed with `what` (the exercise's function).
+pub fn on_draws(what: &str, check: impl FnOnce() -> Result<(), String>) -> Outcome {
+    if std::env::var_os(KNOWN_ONLY).is_some() {
+        return Ok(());
+    }
+    check().map_err(|why| {
+        say!(
+            "{what} on generated numbers: {why}",
+            "{what} sur des nombres générés\u{a0}: {why}"
+        )
+    })
 }
 
 /// A number with up to six significant digits, as the book writes it (`0.5`, `-3`,

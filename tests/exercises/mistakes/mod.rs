@@ -7,6 +7,8 @@
 mod s1;
 #[cfg(feature = "s2")]
 mod s2;
+#[cfg(feature = "s3")]
+mod s3;
 
 use crate::known::Outcome;
 use crate::say;
@@ -31,6 +33,8 @@ pub fn catalogue(session: u32) -> &'static [Mistake] {
         1 => s1::MISTAKES,
         #[cfg(feature = "s2")]
         2 => s2::MISTAKES,
+        #[cfg(feature = "s3")]
+        3 => s3::MISTAKES,
         _ => &[],
     }
 }
@@ -62,7 +66,7 @@ pub fn check_session(session: u32) -> Outcome {
                     mistake.exercise
                 ));
             }
-            Err(_) => {}
+            Err(why) => eprintln!("TMPSHOW {}: {why}", mistake.what),
         }
     }
     Ok(())

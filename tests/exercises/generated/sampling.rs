@@ -1,0 +1,86 @@
+//! The samplers' distributions, as every right answer gives them: draws sorted into
+//! cells that the chapter's density makes equally likely, and a chi-square test of
+//! the counts. Another order of the random numbers, another map from the square,
+//! passes; a density that is off fails, with the cell that is the most off named.
+
+use raycourse::maths::random::{pixel_rng, uniform_pair};
+use raycourse::maths::{PI, Real};
+
+use crate::say;
+
+/// How many draws each cell receives on average.
+const PER_CELL: usize = 80;
+
+/// The standard normal quantile of the test's level: a right sampler fails with
+/// probability `1e-6`, and since the draws are seeded, a right answer that passes
+/// once passes every time.
+const Z_OF_LEVEL: f64 = 4.753;
+
+/// The uniform numbers a sampler is tried at beyond its random draws: 0, the
+/// smallest positive number, 1/2 and the largest number below 1 (`1 - 2^-53` in
+/// double precision), each paired with each.
+pub fn end_points() -> Vec<(Real, Real)> {
+    let ends = [0.0, Real::MIN_POSITIVE, 0.5, 1.0 - Real::EPSILON / 2.0];
+    ends.iter()
+        .flat_map(|&u1| ends.iter().map(move |&u2| (u1, u2)))
+        .collect()
+}
+
+/// The cell, among `bins` equal parts of `[0, 1)`, of `x`; the last for `x = 1`.
+pub fn bin(x: Real, bins: usize) -> usize {
+    ((x * bins as Real).max(0.0) as usize).min(bins - 1)
+}
+
+/// The cell of an azimuth `phi = atan2(y, x)` among `bins` equal parts of the
+/// circle, and the bounds of a cell in degrees.
+pub fn azimuth_bin(y: Real, x: Real, bins: usize) -> usize {
+    bin(y.atan2(x) / (2.0 * PI) + 0.5, bins)
+}
+
+/// The azimuths of cell `k` among `bins`, in degrees, from -180.
+pub fn azimuths(k: usize, bins: usize) -> (Real, Real) {
+    let width = 360.0 / bins as Real;
+    (-180.0 + k as Real * width, -180.0 + (k + 1) as Real * width)
+}
+
+/// Draws a sampler `cells * PER_CELL` times with uniform numbers from a fixed
+/// seed; `place` checks a draw (its `Err` says what is wrong with it) and gives
+/// its cell. Fails when the counts are further from equal than chance allows:
+/// `X^2 = sum (count - E)^2 / E` above its quantile of level `1e-6` (the
+/// Wilson-Hilferty approximation for `cells - 1` degrees of freedom), naming the
+/// cell the most off through `describe`.
+pub fn spread(
+    cells: usize,
+    seed: u64,
+    mut place: impl FnMut(Real, Real) -> Result<usize, String>,
+    describe: impl Fn(usize) -> String,
+) -> Result<(), String> {
+    let draws = cells * PER_CELL;
+    let mut counts = vec![0usize; cells];
+    for k in 0..draws {
+        let (u1, u2) = uniform_pair(&mut pixel_rng(seed, k as u64));
+        counts[place(u1, u2)?] += 1;
+    }
+    let expected = PER_CELL as f64;
+    let statistic: f64 = counts
+        .iter()
+        .map(|&c| (c as f64 - expected).powi(2) / expected)
+        .sum();
+    let df = (cells - 1) as f64;
+    let limit = df * (1.0 - 2.0 / (9.0 * df) + Z_OF_LEVEL * (2.0 / (9.0 * df)).sqrt()).powi(3);
+    if statistic <= limit {
+        return Ok(());
+    }
+    let worst = (0..cells)
+        .max_by(|&a, &b| {
+            let off = |c: usize| (counts[c] as f64 - expected).abs();
+            off(a).total_cmp(&off(b))
+        })
+        .unwrap_or(0);
+    Err(say!(
+        "{} of {draws} draws fell where the chapter's density puts {PER_CELL}: {}, so the draws are not spread as the density says (chi-square {statistic:.0} over {cells} cells of equal probability, above {limit:.0}, which a right answer passes but once in a million)",
+        "{} des {draws} tirages tombent là où la densité du chapitre en met {PER_CELL}\u{a0}: {}, les tirages ne sont donc pas répartis comme le dit la densité (khi-deux de {statistic:.0} sur {cells} cases de même probabilité, au-dessus de {limit:.0}, ce qu'une bonne réponse ne dépasse qu'une fois sur un million)",
+        counts[worst],
+        describe(worst)
+    ))
+}

@@ -1,0 +1,75 @@
+//! Session 3's mistakes: the frame, the indirect bounce, the Gaussian filter.
+
+use raycourse::geometry::Ray;
+use raycourse::maths::frame::Frame;
+use raycourse::maths::sampling::sample_gaussian;
+use raycourse::maths::{Real, Vec3};
+
+use super::Mistake;
+use crate::generated;
+
+/// Session 3's mistakes.
+pub const MISTAKES: &[Mistake] = &[
+    Mistake {
+        exercise: "s3.2",
+        what: "a left-handed frame, T1 and T2 exchanged",
+        run: || {
+            generated::frame(|n| {
+                let f = Frame::new(n);
+                Frame {
+                    t1: f.t2,
+                    t2: f.t1,
+                    n,
+                }
+            })
+        },
+        names: ["the frame is left-handed", "le repère est indirect"],
+    },
+    Mistake {
+        exercise: "s3.2",
+        what: "Frisvad's frame, dividing by 1 + n_z, with -z alone set apart",
+        run: || generated::frame(frisvad),
+        names: ["near N = -z, 1 + n_z", "près de N = -z, 1 + n_z"],
+    },
+    Mistake {
+        exercise: "s3.3",
+        what: "the bounce's ray pushed off by a fixed 1e-9 along N",
+        run: || {
+            generated::indirect_light(|tracer, hit, albedo, bounces| {
+                tracer.bounce(bounces, |tracer, next| {
+                    let direction = tracer.cosine_direction(hit);
+                    let ray = Ray::new(hit.point + 1e-9 * hit.normal, direction);
+                    albedo * tracer.radiance(&ray, next)
+                })
+            })
+        },
+        names: ["hit.spawn(direction)", "hit.spawn(direction)"],
+    },
+    Mistake {
+        exercise: "s3.4",
+        what: "sigma fixed at the stage's 0.5",
+        run: || generated::gaussian(|u1, u2, _| sample_gaussian(u1, u2, 0.5)),
+        names: ["with the sigma given", "avec le sigma donné"],
+    },
+];
+
+/// Frisvad's frame (2012): `a = 1 / (1 + n_z)`, `b = -n_x n_y a`,
+/// `T1 = (1 - n_x^2 a, b, -n_x)`, `T2 = (b, 1 - n_y^2 a, -n_y)`, and the frame
+/// `(0, -1, 0), (-1, 0, 0)` below `n_z = -0.9999999`: right at the poles, off by
+/// `1e-9` and more just above its threshold.
+fn frisvad(n: Vec3) -> Frame {
+    if n.z < -0.999_999_9 {
+        return Frame {
+            t1: Vec3::new(0.0, -1.0, 0.0),
+            t2: Vec3::new(-1.0, 0.0, 0.0),
+            n,
+        };
+    }
+    let a: Real = 1.0 / (1.0 + n.z);
+    let b = -n.x * n.y * a;
+    Frame {
+        t1: Vec3::new(1.0 - n.x * n.x * a, b, -n.x),
+        t2: Vec3::new(b, 1.0 - n.y * n.y * a, -n.y),
+        n,
+    }
+}
