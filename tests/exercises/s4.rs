@@ -6,6 +6,7 @@ use raycourse::lights::Cone;
 use raycourse::maths::{PI, Real, Vec3, pixel_rng};
 
 use crate::checklist::Exercise;
+use crate::generated;
 use crate::known::{Outcome, close, close_vec, ensure, grid_mean, num, vec};
 use crate::s3::mean_of;
 use crate::say;
@@ -95,7 +96,8 @@ fn cone_sample() -> Outcome {
         0.002,
     )?;
     close(&mean_of("x"), x, 0.0, 0.005)?;
-    close(&mean_of("y"), y, 0.0, 0.005)
+    close(&mean_of("y"), y, 0.0, 0.005)?;
+    generated::cone_sample(Cone::sample)
 }
 
 /// One over the cone's solid angle `2 pi (1 - cos(theta_max))` inside it:
@@ -117,7 +119,8 @@ fn cone_pdf() -> Outcome {
         cone.pdf(0.5),
         0.0,
         1e-9,
-    )
+    )?;
+    generated::cone_pdf(Cone::pdf)
 }
 
 /// Uniform on the unit disk: inside it, `E[x] = E[y] = 0`, `E[r^2] = 1/2`, and a
@@ -155,7 +158,8 @@ fn disk() -> Outcome {
         near,
         0.25,
         0.01,
-    )
+    )?;
+    generated::disk(sample_disk)
 }
 
 /// A lens of radius 0.5 focused 10 in front of the eye: the pinhole ray along
@@ -213,5 +217,6 @@ fn thin_lens() -> Outcome {
         spread / draws as Real,
         0.125,
         0.01,
-    )
+    )?;
+    generated::thin_lens(ThinLens::refocus)
 }

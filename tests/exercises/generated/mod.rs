@@ -17,6 +17,8 @@ mod s1;
 mod s2;
 #[cfg(feature = "s3")]
 mod s3;
+#[cfg(feature = "s4")]
+mod s4;
 #[cfg(feature = "s3")]
 mod sampling;
 
@@ -25,6 +27,8 @@ pub use s1::*;
 pub use s2::*;
 #[cfg(feature = "s3")]
 pub use s3::*;
+#[cfg(feature = "s4")]
+pub use s4::*;
 
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};

@@ -9,7 +9,7 @@ use raycourse::maths::frame::Frame;
 use raycourse::maths::{Colour, Real, Vec3};
 
 use super::s1::{direction, scale};
-use super::sampling::{azimuth_bin, azimuths, bin, end_points, spread};
+use super::sampling::{at, azimuth_bin, azimuths, bin, end_points, spread};
 use super::{apart, differs, n, on_draws, on_generated, on_generated_cases, ulps, v};
 use crate::known::Outcome;
 use crate::s1::scene;
@@ -21,12 +21,6 @@ const DRAWS_SEED: u64 = 3;
 /// The cells of a direction or a point: eight bands of the radial variable that
 /// the density makes uniform, times eight sectors of azimuth.
 const BANDS: usize = 8;
-
-/// `(u1, u2) = (a, b)` as the book writes it.
-fn at(u1: Real, u2: Real) -> String {
-    let s = crate::words::separator();
-    format!("(u1{s}u2) = ({}{s}{})", n(u1), n(u2))
-}
 
 /// A direction of the hemisphere must be a unit vector with `z >= 0`, to
 /// `1024` roundings.

@@ -6,6 +6,7 @@
 use raycourse::maths::random::{pixel_rng, uniform_pair};
 use raycourse::maths::{PI, Real};
 
+use super::n;
 use crate::say;
 
 /// How many draws each cell receives on average.
@@ -24,6 +25,19 @@ pub fn end_points() -> Vec<(Real, Real)> {
     ends.iter()
         .flat_map(|&u1| ends.iter().map(move |&u2| (u1, u2)))
         .collect()
+}
+
+/// `(u1, u2) = (a, b)` as the book writes it, a number next to 1 as `1 - e`.
+pub fn at(u1: Real, u2: Real) -> String {
+    let s = crate::words::separator();
+    let u = |x: Real| {
+        if x > 0.999 && x < 1.0 {
+            format!("1 - {}", n(1.0 - x))
+        } else {
+            n(x)
+        }
+    };
+    format!("(u1{s}u2) = ({}{s}{})", u(u1), u(u2))
 }
 
 /// The cell, among `bins` equal parts of `[0, 1)`, of `x`; the last for `x = 1`.

@@ -9,6 +9,8 @@ mod s1;
 mod s2;
 #[cfg(feature = "s3")]
 mod s3;
+#[cfg(feature = "s4")]
+mod s4;
 
 use crate::known::Outcome;
 use crate::say;
@@ -35,6 +37,8 @@ pub fn catalogue(session: u32) -> &'static [Mistake] {
         2 => s2::MISTAKES,
         #[cfg(feature = "s3")]
         3 => s3::MISTAKES,
+        #[cfg(feature = "s4")]
+        4 => s4::MISTAKES,
         _ => &[],
     }
 }

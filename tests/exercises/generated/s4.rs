@@ -1,0 +1,355 @@
+//! Session 4 on generated inputs: the light's cone from the hemisphere down to a
+//! light seen under `1e-6` radians, its density at the edge, the lens's disk, and
+//! thin lenses of every size, off the eye and along any direction.
+
+use proptest::prelude::*;
+use raycourse::camera::ThinLens;
+use raycourse::lights::Cone;
+use raycourse::maths::{PI, Real, Vec3, pixel_rng};
+
+use super::s1::{direction, scale};
+use super::sampling::{at, azimuth_bin, azimuths, bin, end_points, spread};
+use super::{apart, differs, n, on_draws, on_generated, on_generated_cases, ulps, v};
+use crate::known::Outcome;
+use crate::say;
+
+/// The seed of the samplers' draws.
+const DRAWS_SEED: u64 = 4;
+
+/// Bands of the radial variable times sectors of azimuth: 64 cells.
+const BANDS: usize = 8;
+
+/// The cell of a point of azimuth `atan2(y, x)` whose radial variable is `radial`.
+fn cell(radial: Real, y: Real, x: Real) -> usize {
+    bin(radial, BANDS) * BANDS + azimuth_bin(y, x, BANDS)
+}
+
+/// The words for cell `k`, the radial variable named `radial`.
+fn describe(radial: &str, k: usize) -> String {
+    let (low, high) = azimuths(k % BANDS, BANDS);
+    let band = (k / BANDS) as Real / BANDS as Real;
+    say!(
+        "{radial} from {} to {}, the azimuth from {} to {} degrees",
+        "{radial} de {} à {}, l'azimut de {} à {} degrés",
+        n(band),
+        n(band + 1.0 / BANDS as Real),
+        n(low),
+        n(high)
+    )
+}
+
+/// `sin^2(theta_max)` of generated cones: the hemisphere (1), wide cones, and
+/// lights far away down to `1e-12` (`1e-6` in single precision), where
+/// `cos(theta_max)` rounds to 1.
+fn sin2s() -> impl Strategy<Value = Real> {
+    let least: Real = if std::mem::size_of::<Real>() == 8 {
+        12.0
+    } else {
+        6.0
+    };
+    prop_oneof![
+        Just(1.0 as Real),
+        Just(0.25 as Real),
+        (0.0..least).prop_map(|e| (10.0 as Real).powf(-e)),
+    ]
+}
+
+/// `1 - z` of a unit vector without cancellation: `(x^2 + y^2) / (1 + z)`.
+fn one_minus_z(w: Vec3) -> Real {
+    (w.x * w.x + w.y * w.y) / (1.0 + w.z)
+}
+
+/// Exercise s4.1 by its distribution, on generated cones: a unit vector inside the
+/// cone at the end points and every draw, and over 5,120 draws `(1 - cos(theta))
+/// / (1 - cos(theta_max))` uniform on `[0, 1]` (uniform per solid angle) and the
+/// azimuth uniform, by a chi-square over 64 cells. `1 - cos(theta)` is measured as
+/// `(x^2 + y^2) / (1 + z)`, so a light seen under `1e-6` radians is measured to
+/// its last digits.
+pub fn cone_sample(yours: impl Fn(&Cone, Real, Real) -> Vec3) -> Outcome {
+    on_generated_cases("Cone::sample", 32, sin2s(), |sin2| {
+        let cone = Cone::from_sin2(sin2);
+        let inside = |u1, u2| {
+            let w: Vec3 = yours(&cone, u1, u2);
+            let unit = (w.length() - 1.0).abs() <= ulps(1024.0);
+            let ratio = one_minus_z(w) / cone.one_minus_cos_max;
+            if w.is_finite() && unit && w.z > 0.0 && ratio <= 1.0 + ulps(1024.0) {
+                return Ok((ratio, w));
+            }
+            Err(say!(
+                "the cone of sin^2(theta_max) = {} (1 - cos(theta_max) = {}), {}: gave {}, expected a unit vector of the cone, 1 - z <= 1 - cos(theta_max)",
+                "le cône de sin^2(theta_max) = {} (1 - cos(theta_max) = {}), {}\u{a0}: donne {}, attendu un vecteur unitaire du cône, 1 - z <= 1 - cos(theta_max)",
+                n(sin2),
+                n(cone.one_minus_cos_max),
+                at(u1, u2),
+                v(w)
+            ) + &small_cone_hint(&cone))
+        };
+        for (u1, u2) in end_points() {
+            inside(u1, u2)?;
+        }
+        let place = |u1, u2| inside(u1, u2).map(|(ratio, w)| cell(ratio, w.y, w.x));
+        spread(BANDS * BANDS, DRAWS_SEED, place, |k| {
+            describe("(1 - cos(theta)) / (1 - cos(theta_max))", k)
+        })
+        .map_err(|why| {
+            say!(
+                "the cone of sin^2(theta_max) = {}: {why}",
+                "le cône de sin^2(theta_max) = {}\u{a0}: {why}",
+                n(sin2)
+            ) + &small_cone_hint(&cone)
+        })
+    })
+}
+
+/// For a cone so narrow that `cos(theta_max)` is 1 to rounding, why an answer
+/// computed from the cosine goes wrong.
+fn small_cone_hint(cone: &Cone) -> String {
+    if cone.one_minus_cos_max > 1e-3 {
+        return String::new();
+    }
+    say!(
+        "; for so small a cone, 1 - cos(theta_max) taken from the cosine, and sin(theta) from 1 - cos^2(theta), are lost to rounding: take 1 - cos(theta) = xi1 * one_minus_cos_max and sin^2(theta) = (1 - cos)(1 + cos), as the chapter does",
+        "\u{a0}; pour un cône si petit, 1 - cos(theta_max) tiré du cosinus, et sin(theta) de 1 - cos^2(theta), se perdent dans l'arrondi\u{a0}: prenez 1 - cos(theta) = xi1 * one_minus_cos_max et sin^2(theta) = (1 - cos)(1 + cos), comme le chapitre"
+    )
+}
+
+/// Cosines to ask a cone's density at: its edge itself and a few roundings either
+/// side of it, inside, outside, and straight along the axis.
+fn cosines(cone: Cone) -> impl Strategy<Value = Real> {
+    let edge = cone.cos_max;
+    prop_oneof![
+        Just(1.0 as Real),
+        Just(edge),
+        (-8.0..8.0 as Real).prop_map(move |k| edge + k * ulps(1.0)),
+        (0.0..1.0 as Real).prop_map(move |u| 1.0 - u * cone.one_minus_cos_max),
+        -1.0..1.0 as Real,
+    ]
+}
+
+/// Exercise s4.2 on generated cones and cosines, against the course's density:
+/// `1 / (2 pi (1 - cos(theta_max)))` inside, 0 outside, to 64 roundings; on the
+/// edge itself, either.
+pub fn cone_pdf(yours: impl Fn(&Cone, Real) -> Real) -> Outcome {
+    let inputs = sin2s().prop_flat_map(|sin2| {
+        let cone = Cone::from_sin2(sin2);
+        (Just(sin2), cosines(cone))
+    });
+    on_generated("Cone::pdf", inputs, |(sin2, cos)| {
+        let cone = Cone::from_sin2(sin2);
+        let gave = yours(&cone, cos);
+        let course = course::lights::Cone::from_sin2(sin2);
+        let expected = course.pdf(cos);
+        let inside = 1.0 / (2.0 * PI * course.one_minus_cos_max);
+        let on_edge = cos == course.cos_max && (gave == 0.0 || gave == expected);
+        if on_edge || (gave - expected).abs() <= ulps(64.0) * expected {
+            return Ok(());
+        }
+        let case = say!(
+            "the cone of sin^2(theta_max) = {} (cos(theta_max) = {}), cos(theta) = {}",
+            "le cône de sin^2(theta_max) = {} (cos(theta_max) = {}), cos(theta) = {}",
+            n(sin2),
+            n(cone.cos_max),
+            apart(cos, cone.cos_max).0
+        );
+        let why = pdf_diagnosis(gave, expected, inside, &cone);
+        let (gave, expected) = apart(gave, expected);
+        Err(differs(&case, &gave, &expected, why))
+    })
+}
+
+/// Which rule of the cone's density `gave` breaks.
+fn pdf_diagnosis(gave: Real, expected: Real, inside: Real, cone: &Cone) -> Option<String> {
+    if expected == 0.0 {
+        return Some(say!(
+            "outside the cone, cos(theta) < cos(theta_max), no direction is drawn: the density is 0",
+            "hors du cône, cos(theta) < cos(theta_max), aucune direction n'est tirée\u{a0}: la densité est nulle"
+        ));
+    }
+    if gave == 0.0 {
+        return Some(say!(
+            "this direction is inside the cone, cos(theta) >= cos(theta_max): the density is 1 / (2 pi (1 - cos(theta_max)))",
+            "cette direction est dans le cône, cos(theta) >= cos(theta_max)\u{a0}: la densité vaut 1 / (2 pi (1 - cos(theta_max)))"
+        ));
+    }
+    let from_cosine = 1.0 / (2.0 * PI * (1.0 - cone.cos_max));
+    if (gave - inside).abs() > (from_cosine - inside).abs() * 0.5 && cone.one_minus_cos_max < 1e-3 {
+        return Some(say!(
+            "1 - cos(theta_max) taken from the cosine is lost to rounding for so small a cone: use the cone's one_minus_cos_max",
+            "1 - cos(theta_max) tiré du cosinus se perd dans l'arrondi pour un cône si petit\u{a0}: utilisez one_minus_cos_max, que le cône garde"
+        ));
+    }
+    Some(say!(
+        "the density is one over the cone's solid angle, 1 / (2 pi (1 - cos(theta_max))) = {}",
+        "la densité est l'inverse de l'angle solide du cône, 1 / (2 pi (1 - cos(theta_max))) = {}",
+        n(inside)
+    ))
+}
+
+/// Exercise s4.3 by its distribution: at the end points and every draw a point of
+/// the unit disk, and over 5,120 draws `r^2` uniform on `[0, 1]` (uniform per
+/// unit area) and the azimuth uniform, by a chi-square over 64 cells.
+pub fn disk(yours: impl Fn(Real, Real) -> (Real, Real)) -> Outcome {
+    on_draws("sample_disk", || {
+        let on_disk = |u1, u2| {
+            let (x, y) = yours(u1, u2);
+            let r2 = x * x + y * y;
+            if r2.is_finite() && r2 <= 1.0 + ulps(64.0) {
+                return Ok((r2, y, x));
+            }
+            Err(say!(
+                "{} gave ({}, {}): expected a point of the unit disk, x^2 + y^2 <= 1",
+                "{} donne ({}\u{a0}; {})\u{a0}: attendu un point du disque unité, x^2 + y^2 <= 1",
+                at(u1, u2),
+                n(x),
+                n(y)
+            ))
+        };
+        for (u1, u2) in end_points() {
+            on_disk(u1, u2)?;
+        }
+        let place = |u1, u2| on_disk(u1, u2).map(|(r2, y, x)| cell(r2, y, x));
+        spread(BANDS * BANDS, DRAWS_SEED, place, |k| describe("r^2", k))
+    })
+}
+
+/// A generated thin lens and pinhole ray: the aperture (`1e-4` to `1e4`), the
+/// focus distance (from a tenth to ten times as far), the eye (off the origin),
+/// and a direction towards `-z` of any length from `1e-3` to `1e3`.
+fn lenses() -> impl Strategy<Value = (ThinLens, Vec3, Vec3)> {
+    let ahead = direction().prop_filter("looking ahead, along -z", |d| d.z < -0.05);
+    (
+        scale(),
+        -1.0..1.0 as Real,
+        scale(),
+        direction(),
+        ahead,
+        -3.0..3.0 as Real,
+    )
+        .prop_map(|(aperture, focus, eye, towards, d, length)| {
+            let lens = ThinLens {
+                aperture,
+                focus: aperture * (10.0 as Real).powf(focus) * 10.0,
+            };
+            (lens, eye * towards, d * (10.0 as Real).powf(length))
+        })
+}
+
+/// The draws of each generated lens.
+const LENS_DRAWS: u64 = 256;
+
+/// Exercise s4.4 by what the chapter promises, on generated lenses: every ray
+/// starts on the lens, in the eye's plane `z = start.z` within `aperture` of the
+/// eye, and passes through the point where the pinhole ray meets the focus plane,
+/// `start + focus / -d_z * d` (to 1024 roundings of the scene's size); over 256
+/// draws, the starts cover the lens, `E[|o - start|^2] = aperture^2 / 2` within
+/// 10%.
+pub fn thin_lens(
+    yours: impl Fn(&ThinLens, Vec3, Vec3, &mut raycourse::maths::PixelRng) -> (Vec3, Vec3),
+) -> Outcome {
+    on_generated_cases("ThinLens::refocus", 64, lenses(), |(lens, start, d)| {
+        let focus_point = start + d * (lens.focus / -d.z);
+        let size = start.length() + lens.focus / -d.z * d.length() + lens.aperture;
+        let mut spread = 0.0;
+        for k in 0..LENS_DRAWS {
+            let (origin, direction) = yours(&lens, start, d, &mut pixel_rng(DRAWS_SEED, k));
+            lens_fault(&lens, start, d, origin, direction, focus_point, size)?;
+            spread += (origin - start).length_squared() / (lens.aperture * lens.aperture);
+        }
+        let mean = spread / LENS_DRAWS as Real;
+        if (mean - 0.5).abs() <= 0.05 {
+            return Ok(());
+        }
+        Err(say!(
+            "{}: the mean of |o - start|^2 / aperture^2 over {LENS_DRAWS} rays is {}, expected 1/2: the starts are uniform over the lens's area{}",
+            "{}\u{a0}: la moyenne de |o - start|^2 / aperture^2 sur {LENS_DRAWS} rayons vaut {}, attendu 1/2\u{a0}: les départs sont uniformes sur l'aire de la lentille{}",
+            lens_case(&lens, start, d),
+            n(mean),
+            if (mean - 1.0 / 3.0).abs() < 0.05 {
+                say!(
+                    " (1/3 is the mean of r = xi: it crowds the centre)",
+                    " (1/3 est la moyenne de r = xi\u{a0}: les points se massent au centre)"
+                )
+            } else {
+                String::new()
+            }
+        ))
+    })
+}
+
+/// The lens and pinhole ray as the book writes them.
+fn lens_case(lens: &ThinLens, start: Vec3, d: Vec3) -> String {
+    say!(
+        "the lens of radius {} focused at {}, the pinhole ray from {} along {}",
+        "la lentille de rayon {} mise au point à {}, le rayon du sténopé issu de {} selon {}",
+        n(lens.aperture),
+        n(lens.focus),
+        v(start),
+        v(d)
+    )
+}
+
+/// The first promise of the chapter that the ray `(origin, direction)` through the
+/// lens breaks, with why.
+fn lens_fault(
+    lens: &ThinLens,
+    start: Vec3,
+    d: Vec3,
+    origin: Vec3,
+    direction: Vec3,
+    focus_point: Vec3,
+    size: Real,
+) -> Result<(), String> {
+    let tolerance = ulps(1024.0) * size;
+    let case = lens_case(lens, start, d);
+    let shown = say!(
+        "the ray from {} along {}",
+        "le rayon issu de {} selon {}",
+        v(origin),
+        v(direction)
+    );
+    let lateral = (origin - start).truncate().length();
+    if !((origin.z - start.z).abs() <= tolerance && lateral <= lens.aperture + tolerance) {
+        return Err(say!(
+            "{case}: {shown} starts off the lens: a ray through the lens starts in the eye's plane z = {}, within the aperture {} of the eye (the eye plus aperture times a point of the unit disk)",
+            "{case}\u{a0}: {shown} part hors de la lentille\u{a0}: un rayon à travers la lentille part du plan de l'œil z = {}, à moins de l'ouverture {} de l'œil (l'œil plus l'ouverture fois un point du disque unité)",
+            n(start.z),
+            n(lens.aperture)
+        ));
+    }
+    let along = (focus_point - origin).dot(direction) / direction.length_squared();
+    let miss = (origin + along * direction - focus_point).length();
+    if along > 0.0 && miss <= tolerance {
+        return Ok(());
+    }
+    Err(say!(
+        "{case}: {shown} misses the point {} where the pinhole ray meets the focus plane, by {}: {}",
+        "{case}\u{a0}: {shown} manque le point {} où le rayon du sténopé rencontre le plan de mise au point, à {} près\u{a0}: {}",
+        v(focus_point),
+        n(miss),
+        focus_rule(start, d, lens, origin, direction)
+    ))
+}
+
+/// Which rule about the focus point a ray through the lens breaks.
+fn focus_rule(start: Vec3, d: Vec3, lens: &ThinLens, origin: Vec3, direction: Vec3) -> String {
+    let passes = |p: Vec3| {
+        let along = (p - origin).dot(direction) / direction.length_squared();
+        (origin + along * direction - p).length() <= 1e-3 * (p - origin).length()
+    };
+    if passes(start + d.normalize() * lens.focus) {
+        return say!(
+            "the focus plane lies at the distance focus along -z, so the pinhole ray meets it at t = focus / -d_z, not after a length focus along the ray",
+            "le plan de mise au point est à la distance focus selon -z\u{a0}: le rayon du sténopé le rencontre en t = focus / -d_z, et non après une longueur focus le long du rayon"
+        );
+    }
+    if passes(d * (lens.focus / -d.z)) {
+        return say!(
+            "the pinhole ray starts at the eye, start, not at the origin",
+            "le rayon du sténopé part de l'œil, start, et non de l'origine"
+        );
+    }
+    say!(
+        "every ray through the lens passes through that point, the direction is focus_point - origin",
+        "chaque rayon à travers la lentille passe par ce point\u{a0}: la direction est focus_point - origin"
+    )
+}
