@@ -4,6 +4,7 @@ use raycourse::geometry::{Aabb, Ray, intersect_triangle};
 use raycourse::maths::{Real, Vec3};
 
 use crate::checklist::Exercise;
+use crate::generated;
 use crate::known::{Outcome, ensure, maybe, num, same_distance, vec};
 use crate::say;
 use crate::words::separator;
@@ -133,7 +134,7 @@ fn triangle() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::intersect_triangle(intersect_triangle)
 }
 
 /// The box `[-1, 1]^3`: from `(0, 0, 5)` down `-z` the ray enters at `t = 4`; from
@@ -255,5 +256,5 @@ fn slab() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::slab(Aabb::entry)
 }

@@ -19,6 +19,8 @@ mod s2;
 mod s3;
 #[cfg(feature = "s4")]
 mod s4;
+#[cfg(feature = "s5")]
+mod s5;
 #[cfg(feature = "s3")]
 mod sampling;
 
@@ -29,6 +31,8 @@ pub use s2::*;
 pub use s3::*;
 #[cfg(feature = "s4")]
 pub use s4::*;
+#[cfg(feature = "s5")]
+pub use s5::*;
 
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};

@@ -72,7 +72,7 @@ pub fn cone_sample(yours: impl Fn(&Cone, Real, Real) -> Vec3) -> Outcome {
             let w: Vec3 = yours(&cone, u1, u2);
             let unit = (w.length() - 1.0).abs() <= ulps(1024.0);
             let ratio = one_minus_z(w) / cone.one_minus_cos_max;
-            if w.is_finite() && unit && w.z > 0.0 && ratio <= 1.0 + ulps(1024.0) {
+            if w.is_finite() && unit && w.z >= -ulps(64.0) && ratio <= 1.0 + ulps(1024.0) {
                 return Ok((ratio, w));
             }
             Err(say!(

@@ -2,7 +2,9 @@
 //! might, is run through its exercise's generated check, which must fail and name
 //! the rule the mistake breaks. The course's crate runs them as the checklist's
 //! last lines (`mistakes_sN`); a student's exercise crate, whose `course` is a crate
-//! of its own, does not.
+//! of its own, does not. Beside them, right answers written otherwise than the
+//! course's (another frame, another map of the square, no widened exit), which the
+//! same checks must pass: they hold the tolerances to what the chapters allow.
 
 mod s1;
 #[cfg(feature = "s2")]
@@ -11,6 +13,8 @@ mod s2;
 mod s3;
 #[cfg(feature = "s4")]
 mod s4;
+#[cfg(feature = "s5")]
+mod s5;
 
 use crate::known::Outcome;
 use crate::say;
@@ -29,6 +33,17 @@ pub struct Mistake {
     pub names: [&'static str; 2],
 }
 
+/// A right answer written otherwise than the course's: its exercise, how it
+/// differs, and its generated check, which it must pass.
+pub struct Right {
+    /// The exercise, such as `s3.2`.
+    pub exercise: &'static str,
+    /// How it differs from the course's answer, in a few words.
+    pub what: &'static str,
+    /// The generated check run on it.
+    pub run: fn() -> Outcome,
+}
+
 /// The catalogue of session `session`, in the course's order.
 pub fn catalogue(session: u32) -> &'static [Mistake] {
     match session {
@@ -39,13 +54,39 @@ pub fn catalogue(session: u32) -> &'static [Mistake] {
         3 => s3::MISTAKES,
         #[cfg(feature = "s4")]
         4 => s4::MISTAKES,
+        #[cfg(feature = "s5")]
+        5 => s5::MISTAKES,
+        _ => &[],
+    }
+}
+
+/// The right answers of session `session` written otherwise than the course's.
+pub fn right_answers(session: u32) -> &'static [Right] {
+    match session {
+        #[cfg(feature = "s3")]
+        3 => s3::RIGHT,
+        #[cfg(feature = "s4")]
+        4 => s4::RIGHT,
+        #[cfg(feature = "s5")]
+        5 => s5::RIGHT,
         _ => &[],
     }
 }
 
 /// The checklist's line for the mistakes of session `session`: each must fail its
-/// generated check and name its rule.
+/// generated check and name its rule, and each right answer written otherwise
+/// must pass it.
 pub fn check_session(session: u32) -> Outcome {
+    for right in right_answers(session) {
+        (right.run)().map_err(|why| {
+            say!(
+                "the right answer \"{}\" of exercise {} fails its generated check: {why}",
+                "la bonne réponse «\u{a0}{}\u{a0}» de l'exercice {} échoue à sa vérification générée\u{a0}: {why}",
+                right.what,
+                right.exercise
+            )
+        })?;
+    }
     for mistake in catalogue(session) {
         let [english, french] = mistake.names;
         let words = if crate::words::french() {
@@ -70,7 +111,7 @@ pub fn check_session(session: u32) -> Outcome {
                     mistake.exercise
                 ));
             }
-            Err(why) => eprintln!("TMPSHOW {}: {why}", mistake.what),
+            Err(_) => {}
         }
     }
     Ok(())

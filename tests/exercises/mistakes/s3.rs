@@ -3,9 +3,9 @@
 use raycourse::geometry::Ray;
 use raycourse::maths::frame::Frame;
 use raycourse::maths::sampling::sample_gaussian;
-use raycourse::maths::{Real, Vec3};
+use raycourse::maths::{PI, Real, Vec3, uniform_pair};
 
-use super::Mistake;
+use super::{Mistake, Right};
 use crate::generated;
 
 /// Session 3's mistakes.
@@ -73,3 +73,71 @@ fn frisvad(n: Vec3) -> Frame {
         n,
     }
 }
+
+/// Session 3's right answers written otherwise than the course's.
+pub const RIGHT: &[Right] = &[
+    Right {
+        exercise: "s3.1",
+        what: "z from u1 and the azimuth from u2",
+        run: || {
+            generated::cosine_direction(|u1, u2| {
+                let (r, phi) = ((1.0 - u1).sqrt(), 2.0 * PI * u2);
+                Vec3::new(r * phi.cos(), r * phi.sin(), u1.sqrt())
+            })
+        },
+    },
+    Right {
+        exercise: "s3.2",
+        what: "Hughes and Möller's frame",
+        run: || {
+            generated::frame(|n| {
+                let t1 = if n.x.abs() > n.z.abs() {
+                    Vec3::new(-n.y, n.x, 0.0)
+                } else {
+                    Vec3::new(0.0, -n.z, n.y)
+                }
+                .normalize();
+                Frame {
+                    t1,
+                    t2: n.cross(t1),
+                    n,
+                }
+            })
+        },
+    },
+    Right {
+        exercise: "s3.2",
+        what: "Gram-Schmidt from the axis least along N",
+        run: || {
+            generated::frame(|n| {
+                let axis = if n.x.abs() < 0.6 { Vec3::X } else { Vec3::Y };
+                let t1 = (axis - axis.dot(n) * n).normalize();
+                Frame {
+                    t1,
+                    t2: n.cross(t1),
+                    n,
+                }
+            })
+        },
+    },
+    Right {
+        exercise: "s3.3",
+        what: "a uniform direction weighted by 2 cos(theta)",
+        run: || {
+            generated::indirect_light(|tracer, hit, albedo, bounces| {
+                tracer.bounce(bounces, |tracer, next| {
+                    let (u1, u2) = uniform_pair(&mut tracer.rng);
+                    let (r, phi) = ((1.0 - u1 * u1).sqrt(), 2.0 * PI * u2);
+                    let local = Vec3::new(r * phi.cos(), r * phi.sin(), u1);
+                    let direction = Frame::new(hit.normal).to_world(local);
+                    2.0 * u1 * albedo * tracer.radiance(&hit.spawn(direction), next)
+                })
+            })
+        },
+    },
+    Right {
+        exercise: "s3.4",
+        what: "the radius from u2 and the angle from u1",
+        run: || generated::gaussian(|u1, u2, sigma| sample_gaussian(u2, u1, sigma)),
+    },
+];

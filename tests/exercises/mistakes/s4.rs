@@ -2,9 +2,9 @@
 //! lens.
 
 use raycourse::camera::lens::sample_disk;
-use raycourse::maths::{PI, Vec3, uniform_pair};
+use raycourse::maths::{PI, Real, Vec3, uniform_pair};
 
-use super::Mistake;
+use super::{Mistake, Right};
 use crate::generated;
 
 /// Session 4's mistakes.
@@ -97,3 +97,43 @@ pub const MISTAKES: &[Mistake] = &[
         names: ["starts in the eye's plane", "part du plan de l'œil"],
     },
 ];
+
+/// Session 4's right answers written otherwise than the course's.
+pub const RIGHT: &[Right] = &[
+    Right {
+        exercise: "s4.1",
+        what: "1 - cos(theta) = (1 - u1)(1 - cos_max)",
+        run: || {
+            generated::cone_sample(|cone, u1, u2| {
+                let one_minus_cos = (1.0 - u1) * cone.one_minus_cos_max;
+                let sin = (one_minus_cos * (2.0 - one_minus_cos)).sqrt();
+                let phi = 2.0 * PI * u2;
+                Vec3::new(phi.cos() * sin, phi.sin() * sin, 1.0 - one_minus_cos)
+            })
+        },
+    },
+    Right {
+        exercise: "s4.3",
+        what: "the polar map, r = sqrt(u1), phi = 2 pi u2",
+        run: || generated::disk(polar),
+    },
+    Right {
+        exercise: "s4.4",
+        what: "the lens's point by the polar map",
+        run: || {
+            generated::thin_lens(|lens, start, direction, rng| {
+                let focus_point = start + direction * (lens.focus / -direction.z);
+                let (u1, u2) = uniform_pair(rng);
+                let (x, y) = polar(u1, u2);
+                let origin = start + lens.aperture * Vec3::new(x, y, 0.0);
+                (origin, focus_point - origin)
+            })
+        },
+    },
+];
+
+/// The polar map from the square to the unit disk: `r = sqrt(u1)`, `phi = 2 pi u2`.
+fn polar(u1: Real, u2: Real) -> (Real, Real) {
+    let (r, phi) = (u1.sqrt(), 2.0 * PI * u2);
+    (r * phi.cos(), r * phi.sin())
+}
