@@ -47,6 +47,17 @@ pub fn scale() -> impl Strategy<Value = Real> {
     ]
 }
 
+/// How far objects stand from the origin, in their own sizes: up to `1e6` (`1e2`
+/// in single precision, whose seven digits would leave nothing of the object).
+pub fn far() -> impl Strategy<Value = Real> {
+    let most: Real = if std::mem::size_of::<Real>() == 8 {
+        6.0
+    } else {
+        2.0
+    };
+    (0.0..most).prop_map(|e| (10.0 as Real).powf(e))
+}
+
 /// Exercise s1.1 on generated images: odd and non-square sizes, border pixels,
 /// fields of view from 1 to 179 degrees. Any length is right, so the directions
 /// are compared once scaled to the course's image plane.

@@ -7,7 +7,7 @@ use raycourse::camera::ThinLens;
 use raycourse::lights::Cone;
 use raycourse::maths::{PI, Real, Vec3, pixel_rng};
 
-use super::s1::{direction, scale};
+use super::s1::{direction, far, scale};
 use super::sampling::{at, azimuth_bin, azimuths, bin, end_points, spread};
 use super::{apart, differs, n, on_draws, on_generated, on_generated_cases, ulps, v};
 use crate::known::Outcome;
@@ -213,14 +213,15 @@ pub fn disk(yours: impl Fn(Real, Real) -> (Real, Real)) -> Outcome {
 }
 
 /// A generated thin lens and pinhole ray: the aperture (`1e-4` to `1e4`), the
-/// focus distance (from a tenth to ten times as far), the eye (off the origin),
+/// focus distance (from a tenth to ten times as far), the eye (off the origin, up
+/// to `1e6` apertures away, `1e2` in single precision),
 /// and a direction towards `-z` of any length from `1e-3` to `1e3`.
 fn lenses() -> impl Strategy<Value = (ThinLens, Vec3, Vec3)> {
     let ahead = direction().prop_filter("looking ahead, along -z", |d| d.z < -0.05);
     (
         scale(),
         -1.0..1.0 as Real,
-        scale(),
+        far(),
         direction(),
         ahead,
         -3.0..3.0 as Real,
@@ -230,7 +231,11 @@ fn lenses() -> impl Strategy<Value = (ThinLens, Vec3, Vec3)> {
                 aperture,
                 focus: aperture * (10.0 as Real).powf(focus) * 10.0,
             };
-            (lens, eye * towards, d * (10.0 as Real).powf(length))
+            (
+                lens,
+                aperture * eye * towards,
+                d * (10.0 as Real).powf(length),
+            )
         })
 }
 

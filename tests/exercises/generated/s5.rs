@@ -7,21 +7,10 @@ use proptest::prelude::*;
 use raycourse::geometry::{Aabb, Ray, TriangleHit};
 use raycourse::maths::{Real, Vec3};
 
-use super::s1::{direction, scale};
+use super::s1::{direction, far, scale};
 use super::{differs, n, on_generated, ulps, v};
 use crate::known::{Outcome, maybe};
 use crate::say;
-
-/// How far objects stand from the origin, in their own sizes: up to `1e6` (`1e2`
-/// in single precision, whose seven digits would leave nothing of the object).
-fn far() -> impl Strategy<Value = Real> {
-    let most: Real = if std::mem::size_of::<Real>() == 8 {
-        6.0
-    } else {
-        2.0
-    };
-    (0.0..most).prop_map(|e| (10.0 as Real).powf(e))
-}
 
 /// A generated triangle and ray: the corners, the ray, `t_max`, and the point's
 /// weights `(b_B, b_C)` as the ray was aimed (where it meets the plane, to
