@@ -9,7 +9,6 @@
 //! the displayed value (256 steps per display level), so that reading them back
 //! loses nothing the comparison could see.
 
-use std::num::NonZeroU32;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -25,14 +24,17 @@ use crate::known::Outcome;
 use crate::say;
 use crate::words::{decimal, separator};
 
-/// The side of the Monte Carlo images compared, in pixels: four blocks of 8 x 8
-/// pixels across.
-const NOISY_SIZE: u32 = 32;
+/// The width and height of the Monte Carlo images compared, in pixels: five
+/// blocks of 8 x 8 pixels across and three down, odd and not square, so that a
+/// rule that holds only for even or square images shows.
+const NOISY_SIZE: (u32, u32) = (41, 25);
 
-/// The side of the deterministic images compared: large enough that a shaded
-/// sphere changes by fewer display levels from one pixel to the next than `check`
-/// counts as an edge (where any difference is allowed).
-const EXACT_SIZE: u32 = 64;
+/// The width and height of the deterministic images compared: odd and not square,
+/// and large enough that a shaded sphere changes by fewer display levels from one
+/// pixel to the next than `check` counts as an edge (where any difference is
+/// allowed), and that a glass sphere's wrong exit shows in more pixels than its
+/// edges.
+const EXACT_SIZE: (u32, u32) = (201, 151);
 
 /// How many times more samples a Monte Carlo reference has than the render under
 /// test, which takes the course's: fewer would miss the rare paths that find a
@@ -64,18 +66,17 @@ fn course_samples(stage: &Stage) -> u32 {
 /// The stage rendered small (`noisy`: the size of Monte Carlo stages), with
 /// `samples` per pixel and `seed`, and its settings.
 fn film(stage: &Stage, noisy: bool, samples: u32, seed: Option<u64>) -> (Film, Settings) {
-    let size = if noisy { NOISY_SIZE } else { EXACT_SIZE };
-    let overrides = Overrides {
-        width: NonZeroU32::new(size),
-        height: NonZeroU32::new(size),
-        samples: NonZeroU32::new(samples),
-        seed,
-        ..Overrides::default()
-    };
     let scene = stage
-        .scene(&overrides)
+        .scene(&overrides(noisy, samples, seed))
         .expect("the stages' scene files are valid");
     (render(&scene).film, scene.settings)
+}
+
+/// The settings a stage line changes: the size (`noisy`: of Monte Carlo stages),
+/// the samples per pixel and the seed.
+fn overrides(noisy: bool, samples: u32, seed: Option<u64>) -> Overrides {
+    let (width, height) = if noisy { NOISY_SIZE } else { EXACT_SIZE };
+    crate::trace::overrides(width, height, samples, seed)
 }
 
 fn reference_path(stage: &Stage) -> PathBuf {
@@ -99,6 +100,9 @@ pub fn check(stage: &Stage) -> Outcome {
         compare_exact(&displayed(&film, gamma), &read_8(&reference)?, gamma)
     };
     found.map_err(|why| {
+        let traced = crate::trace::trace(stage, &overrides(noisy, samples, None))
+            .map(|found| then(&found))
+            .unwrap_or_default();
         let saved = displayed(&film, gamma).save(&yours).is_ok();
         let place = if saved {
             say!(
@@ -110,8 +114,8 @@ pub fn check(stage: &Stage) -> Outcome {
             String::new()
         };
         say!(
-            "the stage `{}` at {} x {} differs from {}{place}: {why}",
-            "l'étape `{}` en {} x {} diffère de {}{place}\u{a0}: {why}",
+            "the stage `{}` at {} x {} differs from {}{place}: {why}{traced}",
+            "l'étape `{}` en {} x {} diffère de {}{place}\u{a0}: {why}{traced}",
             stage.name,
             film.width,
             film.height,

@@ -36,6 +36,7 @@ mod s5;
 mod s6;
 #[cfg(feature = "s7")]
 mod s7;
+mod trace;
 mod words;
 
 // The course's own answers, which `generated` compares each exercise with: in a

@@ -1,0 +1,381 @@
+//! A stage that differs though the exercises pass, traced to the call that
+//! differs. In a student's exercise crate the course's answers are a crate of
+//! their own (`course`): the stage is rendered by both, the pixel the most off is
+//! followed ray by ray with each tracer writing down what it traces (as `probe`
+//! does), and the first ray or hit that differs is explained by the exercise's
+//! function that made it, with its inputs and both answers.
+
+use std::num::NonZeroU32;
+
+use raycourse::maths::{Colour, Real, Vec3};
+use raycourse::{Overrides, Stage};
+
+use crate::generated::{n, v};
+use crate::say;
+
+/// One ray of a pixel's path and what it met, in numbers both crates share.
+#[derive(Clone, Copy, Debug)]
+struct Step {
+    origin: Vec3,
+    direction: Vec3,
+    hit: Option<Met>,
+}
+
+/// A hit of a path: where, its normal, the object, and what the object is.
+#[derive(Clone, Copy, Debug)]
+struct Met {
+    t: Real,
+    point: Vec3,
+    normal: Vec3,
+    object: usize,
+    surface: Surface,
+}
+
+/// What a surface does to the ray that meets it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Surface {
+    Diffuse,
+    Mirror,
+    Glass(Real),
+}
+
+/// The path of pixel (`row`, `column`) of `scene` as the crate `$krate` traces it,
+/// and the pixel's colour.
+macro_rules! path_of {
+    ($krate:ident, $scene:expr, $row:expr, $column:expr) => {{
+        let mut tracer = $krate::integrator::Tracer::new($scene);
+        tracer.log = Some(vec![]);
+        let colour = $krate::render::rows::pixel(&mut tracer, $row, $column);
+        let log = tracer.log.take().unwrap_or_default();
+        let steps: Vec<Step> = log
+            .iter()
+            .map(|traced| Step {
+                origin: traced.ray.origin,
+                direction: traced.ray.direction,
+                hit: traced.hit.map(|h| Met {
+                    t: h.t,
+                    point: h.point,
+                    normal: h.normal,
+                    object: h.object,
+                    surface: surface_of!($krate, h.material),
+                }),
+            })
+            .collect();
+        (steps, colour)
+    }};
+}
+
+/// The [`Surface`] of a material of the crate `$krate`.
+macro_rules! surface_of {
+    ($krate:ident, $material:expr) => {
+        match $material {
+            #[cfg(feature = "s2")]
+            $krate::materials::Material::Mirror => Surface::Mirror,
+            #[cfg(feature = "s2")]
+            $krate::materials::Material::Glass { index } => Surface::Glass(index),
+            #[cfg(feature = "s4")]
+            $krate::materials::Material::FresnelGlass { index } => Surface::Glass(index),
+            _ => Surface::Diffuse,
+        }
+    };
+}
+
+/// The overrides of the stage lines, for the course's crate.
+fn course_overrides(overrides: &Overrides) -> course::Overrides {
+    course::Overrides {
+        width: overrides.width,
+        height: overrides.height,
+        samples: overrides.samples,
+        seed: overrides.seed,
+        ..course::Overrides::default()
+    }
+}
+
+/// In a student's exercise crate, why the stage rendered with `overrides` differs
+/// from the course's: the first call along the path of the pixel the most off
+/// whose result differs. Nothing in the course's own crate, where the course is
+/// the code under test, or when the course's render is the same.
+pub fn trace(stage: &Stage, overrides: &Overrides) -> Option<String> {
+    if !cfg!(course_answers) {
+        return None;
+    }
+    let yours = stage.scene(overrides).ok()?;
+    let theirs = course::stages()
+        .find(|s| s.name == stage.name)?
+        .scene(&course_overrides(overrides))
+        .ok()?;
+    let gamma = yours.settings.gamma;
+    let (row, column) = most_off(
+        &raycourse::render(&yours).film.pixels,
+        &course::render(&theirs).film.pixels,
+        yours.camera.width,
+        gamma,
+    )?;
+    let (your_path, your_colour) = path_of!(raycourse, &yours, row, column);
+    let (course_path, course_colour) = path_of!(course, &theirs, row, column);
+    let pixel = say!(
+        "pixel (row {row}, column {column})",
+        "le pixel (ligne {row}, colonne {column})"
+    );
+    let found = first_difference(&your_path, &course_path, &yours, &theirs, (row, column))
+        .or_else(|| shading(your_colour, course_colour, gamma))?;
+    Some(say!(
+        "followed ray by ray, {pixel} differs first at {found}",
+        "suivi rayon par rayon, {pixel} diffère d'abord à {found}"
+    ))
+}
+
+/// The pixel whose displayed levels differ the most between two films of `width`
+/// columns, if any does.
+fn most_off(yours: &[Colour], theirs: &[Colour], width: u32, gamma: Real) -> Option<(u32, u32)> {
+    let level = |c: Colour| {
+        c.to_array()
+            .map(|x| raycourse::render::film::display(x, gamma))
+    };
+    let off = |k: usize| {
+        let (a, b) = (level(yours[k]), level(theirs[k]));
+        (0..3).map(|i| a[i].abs_diff(b[i])).max().unwrap_or(0)
+    };
+    let worst = (0..yours.len().min(theirs.len())).max_by_key(|&k| off(k))?;
+    (off(worst) > 0).then(|| (worst as u32 / width, worst as u32 % width))
+}
+
+/// Whether two vectors differ by more than rounding, relative to their size.
+fn apart(a: Vec3, b: Vec3) -> bool {
+    (a - b).length() > 1e-6 * a.length().max(b.length()).max(1e-30)
+}
+
+/// The first step where the two paths differ, explained.
+fn first_difference(
+    yours: &[Step],
+    theirs: &[Step],
+    your_scene: &raycourse::scene::Scene,
+    course_scene: &course::scene::Scene,
+    (row, column): (u32, u32),
+) -> Option<String> {
+    for (k, (y, c)) in yours.iter().zip(theirs).enumerate() {
+        if apart(y.origin, c.origin) || apart(y.direction, c.direction) {
+            return Some(if k == 0 {
+                camera_ray(y, c, your_scene, course_scene, (row, column))
+            } else {
+                new_ray(y, c, &theirs[k - 1])
+            });
+        }
+        if let Some(found) = hit(y, c, your_scene, course_scene) {
+            return Some(found);
+        }
+    }
+    (yours.len() != theirs.len()).then(|| {
+        say!(
+            "the number of rays: yours traced {}, the course's {} (a bounce limit, or a surface that stops or goes on)",
+            "le nombre de rayons\u{a0}: le vôtre en a tracé {}, celui du cours {} (une limite de rebonds, ou une surface qui arrête ou poursuit le chemin)",
+            yours.len(),
+            theirs.len()
+        )
+    })
+}
+
+/// The exercise's words: `exercise s1.1, Camera::pixel_direction`.
+fn exercise(id: &str, function: &str) -> String {
+    say!("exercise {id}, {function}", "l'exercice {id}, {function}")
+}
+
+/// The camera ray differs: the course's pixel direction compared first.
+fn camera_ray(
+    y: &Step,
+    c: &Step,
+    your_scene: &raycourse::scene::Scene,
+    course_scene: &course::scene::Scene,
+    (row, column): (u32, u32),
+) -> String {
+    let gave = your_scene.camera.pixel_direction(row, column);
+    let expected = course_scene.camera.pixel_direction(row, column);
+    if apart(gave, expected) {
+        return say!(
+            "the camera ray, {}: pixel_direction(row = {row}, column = {column}) of the camera {} x {}: yours gave {}, the course's gives {}",
+            "le rayon de la caméra, {}\u{a0}: pixel_direction(ligne = {row}, colonne = {column}) de la caméra {} x {}\u{a0}: le vôtre a obtenu {}, celui du cours obtient {}",
+            exercise("s1.1", "Camera::pixel_direction"),
+            your_scene.camera.width,
+            your_scene.camera.height,
+            v(gave),
+            v(expected)
+        );
+    }
+    say!(
+        "the camera ray: yours from {} along {}, the course's from {} along {}: made by the pixel filter (exercise s3.4), the thin lens (s4.4) or the aim (s7.2), as far as the session goes",
+        "le rayon de la caméra\u{a0}: le vôtre issu de {} selon {}, celui du cours issu de {} selon {}\u{a0}: fait par le filtre du pixel (exercice s3.4), la lentille mince (s4.4) ou la visée (s7.2), selon la séance",
+        v(y.origin),
+        v(y.direction),
+        v(c.origin),
+        v(c.direction)
+    )
+}
+
+/// A ray after the first differs, though the hit it leaves is the same: its
+/// origin is the spawn's, its direction the surface's.
+fn new_ray(y: &Step, c: &Step, before: &Step) -> String {
+    let Some(at) = before.hit else {
+        return say!(
+            "a ray after a miss: yours from {} along {}, the course's from {} along {}",
+            "un rayon après un échec\u{a0}: le vôtre issu de {} selon {}, celui du cours issu de {} selon {}",
+            v(y.origin),
+            v(y.direction),
+            v(c.origin),
+            v(c.direction)
+        );
+    };
+    let from = say!(
+        "the ray leaving the hit at P = {} (N = {}) along {}",
+        "le rayon qui quitte l'intersection en P = {} (N = {}) selon {}",
+        v(at.point),
+        v(at.normal),
+        v(c.direction)
+    );
+    if !apart(y.direction, c.direction) {
+        return say!(
+            "{from}, {}: its origin, yours {}, the course's {}",
+            "{from}, {}\u{a0}: son origine, la vôtre {}, celle du cours {}",
+            exercise("s2.2", "Hit::spawn"),
+            v(y.origin),
+            v(c.origin)
+        );
+    }
+    let (id, function) = match at.surface {
+        Surface::Mirror => ("s2.4", "reflect"),
+        Surface::Glass(_) => ("s2.5", "refract"),
+        Surface::Diffuse => (
+            "s3.1, s3.2, s4.1",
+            "sample_cosine_hemisphere, Frame::new, Cone::sample",
+        ),
+    };
+    say!(
+        "{from}, {}, the incoming direction d = {}: its direction, yours {}, the course's {}",
+        "{from}, {}, la direction d'arrivée d = {}\u{a0}: sa direction, la vôtre {}, celle du cours {}",
+        exercise(id, function),
+        v(before.direction),
+        v(y.direction),
+        v(c.direction)
+    )
+}
+
+/// The same ray met different things: each sphere's test is asked, then the
+/// nearest of them.
+fn hit(
+    y: &Step,
+    c: &Step,
+    your_scene: &raycourse::scene::Scene,
+    course_scene: &course::scene::Scene,
+) -> Option<String> {
+    let same = match (y.hit, c.hit) {
+        (None, None) => true,
+        (Some(a), Some(b)) => {
+            (a.t - b.t).abs() <= 1e-6 * b.t.abs()
+                && !apart(a.normal, b.normal)
+                && a.object == b.object
+        }
+        _ => false,
+    };
+    if same {
+        return None;
+    }
+    let ray = raycourse::geometry::Ray {
+        origin: c.origin,
+        direction: c.direction,
+    };
+    let course_ray = course::geometry::Ray {
+        origin: c.origin,
+        direction: c.direction,
+    };
+    let shown = say!(
+        "the ray from {} along {}",
+        "le rayon issu de {} selon {}",
+        v(c.origin),
+        v(c.direction)
+    );
+    let spheres = your_scene.spheres.iter().zip(&course_scene.spheres);
+    for (index, (mine, course)) in spheres.enumerate() {
+        let (gave, expected) = (mine.intersect(&ray), course.intersect(&course_ray));
+        if gave
+            .zip(expected)
+            .map_or(gave.is_some() != expected.is_some(), |(a, b)| {
+                (a - b).abs() > 1e-6 * b.abs()
+            })
+        {
+            return Some(say!(
+                "{shown} and sphere {index} (centre {}, radius {}), {}: yours gave {}, the course's gives {}",
+                "{shown} et la sphère {index} (centre {}, rayon {}), {}\u{a0}: le vôtre a obtenu {}, celui du cours obtient {}",
+                v(course.centre),
+                n(course.radius),
+                exercise("s1.2", "Sphere::intersect"),
+                distance(gave),
+                distance(expected)
+            ));
+        }
+    }
+    Some(say!(
+        "{shown}: yours met {}, the course's {}; every sphere's test agrees, so the nearest of them (exercise s1.3, Scene::nearest_sphere), or the meshes' tests (s5.1, s5.2, s6.1, s6.2) or the normal (s6.3), as far as the session goes",
+        "{shown}\u{a0}: le vôtre a rencontré {}, celui du cours {}\u{a0}; le test de chaque sphère concorde, donc la plus proche d'entre elles (exercice s1.3, Scene::nearest_sphere), ou les tests des maillages (s5.1, s5.2, s6.1, s6.2) ou la normale (s6.3), selon la séance",
+        met(y.hit),
+        met(c.hit)
+    ))
+}
+
+/// A distance as the book writes it: `t = 4`, or no hit.
+fn distance(t: Option<Real>) -> String {
+    t.map_or(say!("no hit", "aucune intersection"), |t| {
+        format!("t = {}", n(t))
+    })
+}
+
+/// A hit as the book writes it.
+fn met(hit: Option<Met>) -> String {
+    hit.map_or(say!("nothing", "rien"), |h| {
+        say!(
+            "object {} at t = {} (N = {})",
+            "l'objet {} en t = {} (N = {})",
+            h.object,
+            n(h.t),
+            v(h.normal)
+        )
+    })
+}
+
+/// Every ray and hit agree: the difference is in the light computed at them.
+fn shading(yours: Colour, theirs: Colour, gamma: Real) -> Option<String> {
+    let display = |c: Colour| {
+        c.to_array()
+            .map(|x| raycourse::render::film::display(x, gamma))
+    };
+    if !apart(yours, theirs) {
+        let course_levels = theirs
+            .to_array()
+            .map(|x| course::render::film::display(x, gamma));
+        return (display(yours) != course_levels).then(|| {
+            say!(
+                "the display of the same radiance {}, {}: yours gave {:?}, the course's gives {:?}",
+                "l'affichage de la même radiance {}, {}\u{a0}: le vôtre a obtenu {:?}, celui du cours obtient {:?}",
+                v(theirs),
+                exercise("s2.1", "display"),
+                display(yours),
+                course_levels
+            )
+        });
+    }
+    Some(say!(
+        "the light computed along the same rays and hits: yours {}, the course's {}: Lambert (exercise s1.4), the bounce's weight (s3.3), the light's cone and density (s4.1, s4.2) or the texture (s7.1), as far as the session goes",
+        "la lumière calculée le long des mêmes rayons et intersections\u{a0}: la vôtre {}, celle du cours {}\u{a0}: Lambert (exercice s1.4), le poids du rebond (s3.3), le cône de la source et sa densité (s4.1, s4.2) ou la texture (s7.1), selon la séance",
+        v(yours),
+        v(theirs)
+    ))
+}
+
+/// The overrides of a stage line: `width` x `height`, `samples`, `seed`.
+pub fn overrides(width: u32, height: u32, samples: u32, seed: Option<u64>) -> Overrides {
+    Overrides {
+        width: NonZeroU32::new(width),
+        height: NonZeroU32::new(height),
+        samples: NonZeroU32::new(samples),
+        seed,
+        ..Overrides::default()
+    }
+}
