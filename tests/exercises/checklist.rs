@@ -346,10 +346,7 @@ fn caught(run: impl FnOnce() -> Outcome) -> Verdict {
             let place = PANIC_PLACE.lock().map(|p| p.clone()).unwrap_or_default();
             match stub_of(&message) {
                 Some(stub) => Verdict::Stub(stub.to_owned()),
-                None => Verdict::Failed(say!(
-                    "panicked: {message} ({place})",
-                    "panique\u{a0}: {message} ({place})"
-                )),
+                None => Verdict::Failed(crate::panics::explain(&message, &place)),
             }
         }
     }

@@ -23,6 +23,7 @@ mod isolation;
 mod known;
 mod marker;
 mod mistakes;
+mod panics;
 mod s1;
 #[cfg(feature = "s2")]
 mod s2;
