@@ -96,6 +96,7 @@ pub fn on_generated_cases<S: Strategy>(
 
 /// Runs `check`, a sampler's test on generated numbers, unless only the worked
 /// answers are to run; a failure is prefixed with `what` (the exercise's function).
+#[cfg(feature = "s3")]
 pub fn on_draws(what: &str, check: impl FnOnce() -> Result<(), String>) -> Outcome {
     if std::env::var_os(KNOWN_ONLY).is_some() {
         return Ok(());

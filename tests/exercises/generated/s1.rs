@@ -49,6 +49,7 @@ pub fn scale() -> impl Strategy<Value = Real> {
 
 /// How far objects stand from the origin, in their own sizes: up to `1e6` (`1e2`
 /// in single precision, whose seven digits would leave nothing of the object).
+#[cfg(feature = "s4")]
 pub fn far() -> impl Strategy<Value = Real> {
     let most: Real = if std::mem::size_of::<Real>() == 8 {
         6.0
