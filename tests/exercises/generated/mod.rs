@@ -15,10 +15,18 @@
 mod s1;
 #[cfg(feature = "s2")]
 mod s2;
+#[cfg(feature = "s6")]
+mod s6;
+#[cfg(feature = "s7")]
+mod s7;
 
 pub use s1::*;
 #[cfg(feature = "s2")]
 pub use s2::*;
+#[cfg(feature = "s6")]
+pub use s6::*;
+#[cfg(feature = "s7")]
+pub use s7::*;
 
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};

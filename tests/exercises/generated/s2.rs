@@ -93,16 +93,22 @@ fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
     (!named.is_empty()).then(|| named.join(&say!("; or ", "\u{a0}; ou ")))
 }
 
+/// How many powers of ten of its own size a generated object may lie from the
+/// origin: 8 in double precision, 4 in single, whose 7 digits would keep too few
+/// of its size beyond.
+pub fn far() -> Real {
+    if std::mem::size_of::<Real>() == 8 {
+        8.0
+    } else {
+        4.0
+    }
+}
+
 /// A hit on a sphere: its centre, radius and where a ray from outside met it,
 /// at scales from `1e-4` to `1e4` and up to `1e8` away (`1e4` in single precision),
 /// made by the course's own functions.
 fn hits() -> impl Strategy<Value = (Vec3, Real, course::geometry::Hit)> {
-    let far: Real = if std::mem::size_of::<Real>() == 8 {
-        8.0
-    } else {
-        4.0
-    };
-    (direction(), 0.0..far, scale(), direction(), direction()).prop_map(
+    (direction(), 0.0..far(), scale(), direction(), direction()).prop_map(
         |(towards, exponent, radius, at, side)| {
             let centre = (10.0 as Real).powf(exponent) * radius * towards;
             let start = centre + 3.0 * radius * at;

@@ -7,6 +7,10 @@
 mod s1;
 #[cfg(feature = "s2")]
 mod s2;
+#[cfg(feature = "s6")]
+mod s6;
+#[cfg(feature = "s7")]
+mod s7;
 
 use crate::known::Outcome;
 use crate::say;
@@ -31,6 +35,10 @@ pub fn catalogue(session: u32) -> &'static [Mistake] {
         1 => s1::MISTAKES,
         #[cfg(feature = "s2")]
         2 => s2::MISTAKES,
+        #[cfg(feature = "s6")]
+        6 => s6::MISTAKES,
+        #[cfg(feature = "s7")]
+        7 => s7::MISTAKES,
         _ => &[],
     }
 }
