@@ -9,6 +9,7 @@ use raycourse::maths::{Mat3, Real, Vec3};
 use raycourse::meshes::{BruteForce, Mesh, ObjData, Placement, Search, read_obj};
 
 use crate::checklist::Exercise;
+use crate::generated;
 use crate::known::{Outcome, close_vec, ensure, maybe, vec};
 use crate::say;
 
@@ -44,7 +45,7 @@ pub const EXERCISES: &[Exercise] = &[
 ];
 
 /// Where a mesh stands as read: no scale, no turn, no move.
-const AS_READ: Placement = Placement {
+pub const AS_READ: Placement = Placement {
     scale: 1.0,
     rotation: Mat3::IDENTITY,
     translation: Vec3::ZERO,
@@ -178,7 +179,8 @@ fn build() -> Outcome {
             "Spot's {n} triangles end in {leaves} leaves: expected the boxes split until about 4 triangles a leaf",
             "les {n} triangles de Spot aboutissent dans {leaves} feuilles\u{a0}: attendu des boîtes divisées jusqu'à environ 4 triangles par feuille"
         )
-    })
+    })?;
+    generated::bvh_build(Bvh::build)
 }
 
 /// A hierarchy made without the exercise's build: each node's triangles halved in
@@ -268,7 +270,7 @@ fn walk() -> Outcome {
             )
         })?;
     }
-    Ok(())
+    generated::bvh_nearest(Bvh::nearest)
 }
 
 /// One triangle `(0, 0, 0), (1, 0, 0), (0, 1, 0)` with the vertex normals
@@ -351,5 +353,6 @@ fn smooth_normal() -> Outcome {
         flat.smooth_normal(0, [third; 3], Vec3::Z),
         Vec3::Z,
         1e-9,
-    )
+    )?;
+    generated::smooth_normal(Mesh::smooth_normal)
 }

@@ -6,6 +6,7 @@ use raycourse::materials::texture::{Filter, Texture};
 use raycourse::maths::{Colour, Real, Vec3};
 
 use crate::checklist::Exercise;
+use crate::generated;
 use crate::known::{Outcome, close_vec, ensure, vec};
 use crate::say;
 use crate::words::{decimal, separator};
@@ -138,7 +139,7 @@ fn lookup() -> Outcome {
             1e-6,
         )?;
     }
-    Ok(())
+    generated::texture_colour(Texture::colour)
 }
 
 /// From `(0, 0, 10)` at the origin, `y` up: the fixed camera's frame, right
@@ -229,5 +230,6 @@ fn orientation() -> Outcome {
                 vec(eye)
             ))
         )
-    })
+    })?;
+    generated::aim(aim)
 }

@@ -21,6 +21,10 @@ mod s3;
 mod s4;
 #[cfg(feature = "s5")]
 mod s5;
+#[cfg(feature = "s6")]
+mod s6;
+#[cfg(feature = "s7")]
+mod s7;
 #[cfg(feature = "s3")]
 mod sampling;
 
@@ -33,6 +37,10 @@ pub use s3::*;
 pub use s4::*;
 #[cfg(feature = "s5")]
 pub use s5::*;
+#[cfg(feature = "s6")]
+pub use s6::*;
+#[cfg(feature = "s7")]
+pub use s7::*;
 
 use proptest::strategy::Strategy;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};

@@ -93,17 +93,29 @@ fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
     (!named.is_empty()).then(|| named.join(&say!("; or ", "\u{a0}; ou ")))
 }
 
+/// How many powers of ten of its own size a generated object may lie from the
+/// origin: 8 in double precision, 4 in single, whose 7 digits would keep too few
+/// of its size beyond.
+pub fn farthest_power() -> Real {
+    if std::mem::size_of::<Real>() == 8 {
+        8.0
+    } else {
+        4.0
+    }
+}
+
 /// A hit on a sphere: its centre, radius and where a ray from outside met it,
 /// at scales from `1e-4` to `1e4` and up to `1e8` away (`1e4` in single precision),
 /// made by the course's own functions.
 fn hits() -> impl Strategy<Value = (Vec3, Real, course::geometry::Hit)> {
-    let far: Real = if std::mem::size_of::<Real>() == 8 {
-        8.0
-    } else {
-        4.0
-    };
-    (direction(), 0.0..far, scale(), direction(), direction()).prop_map(
-        |(towards, exponent, radius, at, side)| {
+    (
+        direction(),
+        0.0..farthest_power(),
+        scale(),
+        direction(),
+        direction(),
+    )
+        .prop_map(|(towards, exponent, radius, at, side)| {
             let centre = (10.0 as Real).powf(exponent) * radius * towards;
             let start = centre + 3.0 * radius * at;
             let aim = centre + 0.5 * radius * side - start;
@@ -111,8 +123,7 @@ fn hits() -> impl Strategy<Value = (Vec3, Real, course::geometry::Hit)> {
             let ray = course::geometry::Ray::new(start, aim.normalize());
             let t = ball.intersect(&ray).unwrap_or(0.0);
             (centre, radius, ball.hit_at(&ray, t, 0))
-        },
-    )
+        })
 }
 
 /// The student's copy of the course's hit.

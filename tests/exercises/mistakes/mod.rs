@@ -15,6 +15,10 @@ mod s3;
 mod s4;
 #[cfg(feature = "s5")]
 mod s5;
+#[cfg(feature = "s6")]
+mod s6;
+#[cfg(feature = "s7")]
+mod s7;
 
 use crate::known::Outcome;
 use crate::say;
@@ -56,6 +60,10 @@ pub fn catalogue(session: u32) -> &'static [Mistake] {
         4 => s4::MISTAKES,
         #[cfg(feature = "s5")]
         5 => s5::MISTAKES,
+        #[cfg(feature = "s6")]
+        6 => s6::MISTAKES,
+        #[cfg(feature = "s7")]
+        7 => s7::MISTAKES,
         _ => &[],
     }
 }
