@@ -120,7 +120,7 @@ pub fn trace(stage: &Stage, overrides: &Overrides) -> Option<String> {
         .or_else(|| shading(your_colour, course_colour, gamma))?;
     Some(say!(
         "followed ray by ray, {pixel} differs first at {found}",
-        "suivi rayon par rayon, {pixel} diffère d'abord à {found}"
+        "suivi rayon par rayon, {pixel} diffère d'abord à cet endroit\u{a0}: {found}"
     ))
 }
 
