@@ -207,8 +207,8 @@ fn used_by(exercises: &[Exercise], shown: &[&str]) -> Vec<&'static str> {
 
 /// For a stage that differs while every exercise so far passes its known answers
 /// (their tests cannot see everything an image needs): the exercises to look at
-/// again. `None` when an exercise fails or a stub stopped the stage, which its line
-/// already names.
+/// again. `None` when an exercise fails, a stub stopped the stage, or the stage's
+/// failure was traced to the call that differs, which its line already names.
 fn look_again(
     verdict: &Verdict,
     earlier: &HashMap<&str, Verdict>,
@@ -216,7 +216,10 @@ fn look_again(
     markers: &HashMap<String, MarkerLine>,
 ) -> Option<String> {
     let all_pass = earlier.values().all(|v| *v == Verdict::Passed);
-    if !matches!(verdict, Verdict::Failed(_)) || !all_pass || used.is_empty() {
+    let Verdict::Failed(why) = verdict else {
+        return None;
+    };
+    if !all_pass || used.is_empty() || crate::trace::names_the_call(why) {
         return None;
     }
     let names: Vec<String> = used.iter().map(|id| describe(id, markers)).collect();

@@ -77,8 +77,8 @@ fn function_end(lines: &[&str], marker: usize) -> Option<usize> {
 fn rule(message: &str) -> Option<String> {
     if message.contains("subtract with overflow") {
         Some(say!(
-            "an unsigned integer (u32, usize) went below 0: convert to Real before subtracting, as the chapter computes in real numbers",
-            "un entier non signé (u32, usize) est passé sous 0\u{a0}: convertissez en Real avant de soustraire, le chapitre calcule en nombres réels"
+            "an unsigned integer (u32, usize) went below 0: convert to Real before subtracting, since the chapter computes in real numbers",
+            "un entier non signé (u32, usize) est passé sous 0\u{a0}: convertissez en Real avant de soustraire, car le chapitre calcule en nombres réels"
         ))
     } else if message.contains("with overflow") {
         Some(say!(
@@ -92,8 +92,8 @@ fn rule(message: &str) -> Option<String> {
         ))
     } else if message.contains("on a `None` value") {
         Some(say!(
-            "unwrap() on None: a miss is None, a case of its own (match it, or use if let)",
-            "unwrap() sur None\u{a0}: un échec vaut None, un cas à part entière (filtrez-le avec match ou if let)"
+            "unwrap() on None: None (no hit, say) is a case of its own, to handle with match or if let",
+            "unwrap() sur None\u{a0}: None (l'absence d'intersection, par exemple) est un cas à part entière, à traiter avec match ou if let"
         ))
     } else if message.contains("divide by zero") {
         Some(say!(

@@ -124,6 +124,19 @@ pub fn trace(stage: &Stage, overrides: &Overrides) -> Option<String> {
     ))
 }
 
+/// Whether a stage's failure `why` already names the call that differs: traced
+/// ray by ray, or a panic in an exercise's function (`panics::explain`).
+pub fn names_the_call(why: &str) -> bool {
+    [
+        "followed ray by ray",
+        "suivi rayon par rayon",
+        "panicked in exercise",
+        "panique dans l'exercice",
+    ]
+    .iter()
+    .any(|words| why.contains(words))
+}
+
 /// The pixel whose displayed levels differ the most between two films of `width`
 /// columns, if any does.
 fn most_off(yours: &[Colour], theirs: &[Colour], width: u32, gamma: Real) -> Option<(u32, u32)> {
@@ -216,7 +229,7 @@ fn new_ray(y: &Step, c: &Step, before: &Step) -> String {
     let Some(at) = before.hit else {
         return say!(
             "a ray after a miss: yours from {} along {}, the course's from {} along {}",
-            "un rayon après un échec\u{a0}: le vôtre issu de {} selon {}, celui du cours issu de {} selon {}",
+            "un rayon après une absence d'intersection\u{a0}: le vôtre issu de {} selon {}, celui du cours issu de {} selon {}",
             v(y.origin),
             v(y.direction),
             v(c.origin),
@@ -352,7 +365,7 @@ fn shading(yours: Colour, theirs: Colour, gamma: Real) -> Option<String> {
         return (display(yours) != course_levels).then(|| {
             say!(
                 "the display of the same radiance {}, {}: yours gave {:?}, the course's gives {:?}",
-                "l'affichage de la même radiance {}, {}\u{a0}: le vôtre a obtenu {:?}, celui du cours obtient {:?}",
+                "l'affichage de la même luminance {}, {}\u{a0}: le vôtre a obtenu {:?}, celui du cours obtient {:?}",
                 v(theirs),
                 exercise("s2.1", "display"),
                 display(yours),

@@ -53,7 +53,7 @@ fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
     if radiance.is_nan() || radiance < 0.0 {
         return Some(say!(
             "a negative or NaN radiance shows as black, 0: clamp it at 0 before the power",
-            "une radiance négative ou NaN s'affiche en noir, 0\u{a0}: ramenez-la à 0 avant la puissance"
+            "une luminance négative ou NaN s'affiche en noir, 0\u{a0}: ramenez-la à 0 avant la puissance"
         ));
     }
     let level = |x: Real| x.clamp(0.0, 255.0);
