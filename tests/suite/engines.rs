@@ -209,9 +209,10 @@ fn meshes_cast_the_same_shadows_under_a_point_light() {
 
 /// In single precision the fast engine follows eight paths at once, and its images
 /// are single precision's, not double's bytes: they must still match the
-/// double-precision references of the exercises (`tests/exercises/references/`, 32 x
-/// 32, many more samples) by `check`'s statistical test, block by block against
-/// the noise; and a wrong image (the light a quarter dimmer) must not.
+/// double-precision references of the exercises (`tests/exercises/references/`, at
+/// their size, with many more samples) by `check`'s statistical test, block by
+/// block against the noise; and a wrong image (the light a quarter dimmer) must
+/// not.
 #[cfg(feature = "f32")]
 #[test]
 fn single_precision_images_match_the_double_precision_references() {
@@ -220,9 +221,12 @@ fn single_precision_images_match_the_double_precision_references() {
         let Some(stage) = stages().find(|s| s.name == name) else {
             continue;
         };
+        let reference = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join(format!("tests/exercises/references/{name}.png"));
+        let reference = image::open(&reference).unwrap().into_rgb16();
         let overrides = Overrides {
-            width: NonZeroU32::new(32),
-            height: NonZeroU32::new(32),
+            width: NonZeroU32::new(reference.width()),
+            height: NonZeroU32::new(reference.height()),
             ..Overrides::default()
         };
         let fast = BeyondOverrides {
@@ -236,9 +240,6 @@ fn single_precision_images_match_the_double_precision_references() {
         );
         let gamma = scene.settings.gamma;
         let film = render(&scene, &beyond).film;
-        let reference = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join(format!("tests/exercises/references/{name}.png"));
-        let reference = image::open(&reference).unwrap().into_rgb16();
         let values = reference.as_raw().iter();
         let reference = Linear {
             width: reference.width(),

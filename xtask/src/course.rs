@@ -72,7 +72,13 @@ fn course_manifest(text: &str) -> Result<String, String> {
     Ok(doc.to_string())
 }
 
-/// The exercise crate's manifest `doc` with the course as a dev-dependency.
+/// The dev-dependencies that an exercise crate's one test, the checklist, uses
+/// beside the course: the others serve tests that only the course's crate holds
+/// (snapshots, studies), and would lengthen a student's first build.
+const CHECKLIST_USES: &[&str] = &["proptest", "course"];
+
+/// The exercise crate's manifest `doc` with the course as a dev-dependency, and
+/// no dev-dependency the checklist does not use.
 pub fn depend_on_course(doc: &mut DocumentMut) {
     let mut course = toml_edit::InlineTable::new();
     course.insert("package", "raycourse-course".into());
@@ -81,13 +87,23 @@ pub fn depend_on_course(doc: &mut DocumentMut) {
         doc["dev-dependencies"] = toml_edit::table();
     }
     doc["dev-dependencies"]["course"] = toml_edit::value(course);
+    if let Some(table) = doc["dev-dependencies"].as_table_like_mut() {
+        let unused: Vec<String> = table
+            .iter()
+            .map(|(name, _)| name.to_owned())
+            .filter(|name| !CHECKLIST_USES.contains(&name.as_str()))
+            .collect();
+        for name in unused {
+            table.remove(&name);
+        }
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    const MANIFEST: &str = "[workspace]\n\n[package]\nname = \"raycourse\"\nversion = \"0.1.0-s3\"\nreadme = \"README.md\"\n\n[dependencies]\nglam = \"0.34\"\n\n[dev-dependencies]\ninsta = \"1\"\n\n[[bin]]\nname = \"raycourse\"\npath = \"src/main.rs\"\n\n[[test]]\nname = \"exercises\"\npath = \"tests/exercises/main.rs\"\nharness = false\n\n[profile.test]\nopt-level = 3\n";
+    const MANIFEST: &str = "[workspace]\n\n[package]\nname = \"raycourse\"\nversion = \"0.1.0-s3\"\nreadme = \"README.md\"\n\n[dependencies]\nglam = \"0.34\"\n\n[dev-dependencies]\ninsta = \"1\"\nproptest = \"1\"\n\n[[bin]]\nname = \"raycourse\"\npath = \"src/main.rs\"\n\n[[test]]\nname = \"exercises\"\npath = \"tests/exercises/main.rs\"\nharness = false\n\n[profile.test]\nopt-level = 3\n";
 
     #[test]
     fn the_course_is_a_library_named_course_with_the_dependencies_alone() {
@@ -109,5 +125,7 @@ mod tests {
         let course = doc["dev-dependencies"]["course"].as_inline_table().unwrap();
         assert_eq!(course.get("path").and_then(|p| p.as_str()), Some(FOLDER));
         assert!(doc["dependencies"].get("course").is_none());
+        assert!(doc["dev-dependencies"].get("insta").is_none());
+        assert!(doc["dev-dependencies"].get("proptest").is_some());
     }
 }

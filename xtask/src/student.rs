@@ -125,12 +125,13 @@ fn readme(session: u32, stubbed: &[Marker]) -> String {
          `cargo test` runs each exercise's known answers (worked out by hand in the \
          book) and compares it with the course's own function on generated inputs that \
          reach the awkward cases (odd image sizes, far and tiny spheres, ties, grazing \
-         rays), printing the simplest input that differs with the rule it breaks; then \
-         it renders each stage small and compares it with the reference image \
-         in `tests/exercises/references/`: within a few display levels for one sample \
-         per pixel, within the noise for Monte Carlo stages, whatever formula you chose \
-         and whatever order you draw your random numbers in. Its last line says how far \
-         you are. The course's answers are in `tests/course/`, which only the checklist \
+         rays, poles, degenerate triangles, non-square textures), printing the simplest input that differs with the rule it breaks; then \
+         it renders each stage at an odd, non-square size and compares it with the \
+         reference image in `tests/exercises/references/`: within a few display levels \
+         for one sample per pixel, within the noise for Monte Carlo stages, whatever \
+         formula you chose and whatever order you draw your random numbers in. A stage \
+         that differs is followed ray by ray, with your code and the course's, to the \
+         first call whose result differs. Its last line says how far you are. The course's answers are in `tests/course/`, which only the checklist \
          compiles (your `src/` never calls it), and in the course's crate: `cargo xtask \
          view s{session} DIR` writes the finished session.\n"
     )
