@@ -71,6 +71,9 @@ pub fn catalogue(session: u32) -> &'static [Mistake] {
 /// The right answers of session `session` written otherwise than the course's.
 pub fn right_answers(session: u32) -> &'static [Right] {
     match session {
+        1 => s1::RIGHT,
+        #[cfg(feature = "s2")]
+        2 => s2::RIGHT,
         #[cfg(feature = "s3")]
         3 => s3::RIGHT,
         #[cfg(feature = "s4")]

@@ -7,7 +7,7 @@ use raycourse::lights::PointLight;
 use raycourse::maths::{Colour, PI, Real, Vec3};
 use raycourse::scene::Scene;
 
-use super::Mistake;
+use super::{Mistake, Right};
 use crate::generated;
 use crate::known::Outcome;
 
@@ -169,6 +169,22 @@ pub const MISTAKES: &[Mistake] = &[
         ],
     },
 ];
+
+/// Session 1's right answers written otherwise than the course's.
+pub const RIGHT: &[Right] = &[Right {
+    exercise: "s1.1",
+    what: "the row measured down from the top, y = H/2 - (row + 1/2)",
+    run: || {
+        generated::pixel_direction(|c, row, column| {
+            let (w, h) = (c.width as Real, c.height as Real);
+            Vec3::new(
+                column as Real + 0.5 - w / 2.0,
+                h / 2.0 - (row as Real + 0.5),
+                plane(c),
+            )
+        })
+    },
+}];
 
 /// The image plane's `z` of the course's camera: `-H / (2 tan(alpha/2))`.
 fn plane(camera: &Camera) -> Real {

@@ -2,7 +2,7 @@
 
 use raycourse::geometry::Ray;
 
-use super::Mistake;
+use super::{Mistake, Right};
 use crate::generated;
 
 /// Session 2's mistakes.
@@ -111,3 +111,15 @@ pub const MISTAKES: &[Mistake] = &[
         ],
     },
 ];
+
+/// Session 2's right answers written otherwise than the course's.
+pub const RIGHT: &[Right] = &[Right {
+    exercise: "s2.4",
+    what: "d + 2 cos(theta) N, with cos(theta) = -d . N",
+    run: || {
+        generated::reflect(|d, normal| {
+            let cos = -d.dot(normal);
+            d + 2.0 * cos * normal
+        })
+    },
+}];
