@@ -9,7 +9,7 @@ use raycourse::maths::frame::Frame;
 use raycourse::maths::{Colour, Real, Vec3};
 
 use super::s1::{direction, scale};
-use super::sampling::{at, azimuth_bin, azimuths, bin, end_points, spread};
+use super::sampling::{DRAWS, at, cell, describe, end_points, spread};
 use super::{apart, differs, n, on_draws, on_generated, on_generated_cases, ulps, v};
 use crate::known::Outcome;
 use crate::s1::scene;
@@ -17,10 +17,6 @@ use crate::say;
 
 /// The seed of the samplers' draws.
 const DRAWS_SEED: u64 = 3;
-
-/// The cells of a direction or a point: eight bands of the radial variable that
-/// the density makes uniform, times eight sectors of azimuth.
-const BANDS: usize = 8;
 
 /// A direction of the hemisphere must be a unit vector with `z >= 0`, to
 /// `1024` roundings.
@@ -48,20 +44,9 @@ pub fn cosine_direction(yours: impl Fn(Real, Real) -> Vec3) -> Outcome {
         let place = |u1, u2| {
             let w = yours(u1, u2);
             unit_above(w, u1, u2)?;
-            Ok(bin(w.z * w.z, BANDS) * BANDS + azimuth_bin(w.y, w.x, BANDS))
+            Ok(cell(w.z * w.z, w.y, w.x))
         };
-        spread(BANDS * BANDS, DRAWS_SEED, place, |cell| {
-            let (low, high) = azimuths(cell % BANDS, BANDS);
-            let band = (cell / BANDS) as Real / BANDS as Real;
-            say!(
-                "cos^2(theta) from {} to {}, the azimuth from {} to {} degrees",
-                "cos^2(theta) de {} à {}, l'azimut de {} à {} degrés",
-                n(band),
-                n(band + 1.0 / BANDS as Real),
-                n(low),
-                n(high)
-            )
-        })
+        spread(DRAWS_SEED, place, |k| describe("cos^2(theta)", k))
     })
 }
 
@@ -329,24 +314,12 @@ fn gaussian_spread(
         let (x, y) = yours(u1, u2, sigma);
         let r2 = x * x + y * y;
         squares += r2;
-        Ok(bin((-r2 / (2.0 * sigma * sigma)).exp(), BANDS) * BANDS + azimuth_bin(y, x, BANDS))
+        Ok(cell((-r2 / (2.0 * sigma * sigma)).exp(), y, x))
     };
-    let describe = |cell: usize| {
-        let (low, high) = azimuths(cell % BANDS, BANDS);
-        let band = (cell / BANDS) as Real / BANDS as Real;
-        say!(
-            "exp(-r^2 / (2 sigma^2)) from {} to {}, the azimuth from {} to {} degrees",
-            "exp(-r^2 / (2 sigma^2)) de {} à {}, l'azimut de {} à {} degrés",
-            n(band),
-            n(band + 1.0 / BANDS as Real),
-            n(low),
-            n(high)
-        )
-    };
-    let outcome = spread(BANDS * BANDS, DRAWS_SEED, place, describe);
+    let describe = |k| describe("exp(-r^2 / (2 sigma^2))", k);
+    let outcome = spread(DRAWS_SEED, place, describe);
     outcome.map_err(|why| {
-        let draws = (BANDS * BANDS * 80) as Real;
-        let measured = (squares / (2.0 * draws)).sqrt();
+        let measured = (squares / (2.0 * DRAWS as Real)).sqrt();
         say!(
             "sigma = {}: {why}; the offsets spread as sigma = {} would (E[x^2 + y^2] = 2 sigma^2): the offset is sigma times a standard normal pair, with the sigma given",
             "sigma = {}\u{a0}: {why}\u{a0}; les décalages s'étalent comme avec sigma = {} (E[x^2 + y^2] = 2 sigma^2)\u{a0}: le décalage est sigma fois une paire normale centrée réduite, avec le sigma donné",

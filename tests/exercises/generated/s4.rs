@@ -8,35 +8,13 @@ use raycourse::lights::Cone;
 use raycourse::maths::{PI, Real, Vec3, pixel_rng};
 
 use super::s1::{direction, far, scale};
-use super::sampling::{at, azimuth_bin, azimuths, bin, end_points, spread};
+use super::sampling::{at, cell, describe, end_points, spread};
 use super::{apart, differs, n, on_draws, on_generated, on_generated_cases, ulps, v};
 use crate::known::Outcome;
 use crate::say;
 
 /// The seed of the samplers' draws.
 const DRAWS_SEED: u64 = 4;
-
-/// Bands of the radial variable times sectors of azimuth: 64 cells.
-const BANDS: usize = 8;
-
-/// The cell of a point of azimuth `atan2(y, x)` whose radial variable is `radial`.
-fn cell(radial: Real, y: Real, x: Real) -> usize {
-    bin(radial, BANDS) * BANDS + azimuth_bin(y, x, BANDS)
-}
-
-/// The words for cell `k`, the radial variable named `radial`.
-fn describe(radial: &str, k: usize) -> String {
-    let (low, high) = azimuths(k % BANDS, BANDS);
-    let band = (k / BANDS) as Real / BANDS as Real;
-    say!(
-        "{radial} from {} to {}, the azimuth from {} to {} degrees",
-        "{radial} de {} à {}, l'azimut de {} à {} degrés",
-        n(band),
-        n(band + 1.0 / BANDS as Real),
-        n(low),
-        n(high)
-    )
-}
 
 /// `sin^2(theta_max)` of generated cones: the hemisphere (1), wide cones, and
 /// lights far away down to `1e-12` (`1e-6` in single precision), where
@@ -88,7 +66,7 @@ pub fn cone_sample(yours: impl Fn(&Cone, Real, Real) -> Vec3) -> Outcome {
             inside(u1, u2)?;
         }
         let place = |u1, u2| inside(u1, u2).map(|(ratio, w)| cell(ratio, w.y, w.x));
-        spread(BANDS * BANDS, DRAWS_SEED, place, |k| {
+        spread(DRAWS_SEED, place, |k| {
             describe("(1 - cos(theta)) / (1 - cos(theta_max))", k)
         })
         .map_err(|why| {
@@ -208,7 +186,7 @@ pub fn disk(yours: impl Fn(Real, Real) -> (Real, Real)) -> Outcome {
             on_disk(u1, u2)?;
         }
         let place = |u1, u2| on_disk(u1, u2).map(|(r2, y, x)| cell(r2, y, x));
-        spread(BANDS * BANDS, DRAWS_SEED, place, |k| describe("r^2", k))
+        spread(DRAWS_SEED, place, |k| describe("r^2", k))
     })
 }
 

@@ -12,6 +12,16 @@ use crate::say;
 /// How many draws each cell receives on average.
 const PER_CELL: usize = 80;
 
+/// The bands of a sampler's radial variable (the one its density makes uniform),
+/// and as many sectors of azimuth: the cells are a band and a sector.
+const BANDS: usize = 8;
+
+/// The cells of a sampler's test.
+const CELLS: usize = BANDS * BANDS;
+
+/// How many times a sampler is drawn.
+pub const DRAWS: usize = CELLS * PER_CELL;
+
 /// The standard normal quantile of the test's level: a right sampler fails with
 /// probability `1e-6`, and since the draws are seeded, a right answer that passes
 /// once passes every time.
@@ -41,35 +51,53 @@ pub fn at(u1: Real, u2: Real) -> String {
 }
 
 /// The cell, among `bins` equal parts of `[0, 1)`, of `x`; the last for `x = 1`.
-pub fn bin(x: Real, bins: usize) -> usize {
+fn bin(x: Real, bins: usize) -> usize {
     ((x * bins as Real).max(0.0) as usize).min(bins - 1)
 }
 
 /// The cell of an azimuth `phi = atan2(y, x)` among `bins` equal parts of the
 /// circle, and the bounds of a cell in degrees.
-pub fn azimuth_bin(y: Real, x: Real, bins: usize) -> usize {
+fn azimuth_bin(y: Real, x: Real, bins: usize) -> usize {
     bin(y.atan2(x) / (2.0 * PI) + 0.5, bins)
 }
 
 /// The azimuths of cell `k` among `bins`, in degrees, from -180.
-pub fn azimuths(k: usize, bins: usize) -> (Real, Real) {
+fn azimuths(k: usize, bins: usize) -> (Real, Real) {
     let width = 360.0 / bins as Real;
     (-180.0 + k as Real * width, -180.0 + (k + 1) as Real * width)
 }
 
-/// Draws a sampler `cells * PER_CELL` times with uniform numbers from a fixed
-/// seed; `place` checks a draw (its `Err` says what is wrong with it) and gives
-/// its cell. Fails when the counts are further from equal than chance allows:
+/// The cell of a draw whose radial variable (uniform on `[0, 1]` under the
+/// chapter's density) is `radial` and whose azimuth is `atan2(y, x)`.
+pub fn cell(radial: Real, y: Real, x: Real) -> usize {
+    bin(radial, BANDS) * BANDS + azimuth_bin(y, x, BANDS)
+}
+
+/// The words for cell `k`, the radial variable named `radial`.
+pub fn describe(radial: &str, k: usize) -> String {
+    let (low, high) = azimuths(k % BANDS, BANDS);
+    let band = (k / BANDS) as Real / BANDS as Real;
+    say!(
+        "{radial} from {} to {}, the azimuth from {} to {} degrees",
+        "{radial} de {} à {}, l'azimut de {} à {} degrés",
+        n(band),
+        n(band + 1.0 / BANDS as Real),
+        n(low),
+        n(high)
+    )
+}
+
+/// Draws a sampler `DRAWS` times with uniform numbers from a fixed seed; `place`
+/// checks a draw (its `Err` says what is wrong with it) and gives its [`cell`]. Fails when the counts are further from equal than chance allows:
 /// `X^2 = sum (count - E)^2 / E` above its quantile of level `1e-6` (the
-/// Wilson-Hilferty approximation for `cells - 1` degrees of freedom), naming the
+/// Wilson-Hilferty approximation for `CELLS - 1` degrees of freedom), naming the
 /// cell the most off through `describe`.
 pub fn spread(
-    cells: usize,
     seed: u64,
     mut place: impl FnMut(Real, Real) -> Result<usize, String>,
     describe: impl Fn(usize) -> String,
 ) -> Result<(), String> {
-    let draws = cells * PER_CELL;
+    let (cells, draws) = (CELLS, DRAWS);
     let mut counts = vec![0usize; cells];
     for k in 0..draws {
         let (u1, u2) = uniform_pair(&mut pixel_rng(seed, k as u64));
