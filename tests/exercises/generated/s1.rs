@@ -258,6 +258,9 @@ enum Place {
     Inside { depth: Real },
     /// Behind the sphere, moving away.
     Behind { distance: Real },
+    /// On the sphere itself (`|s| = R` exactly), moving inwards or not: a ray
+    /// leaving a surface, whose own start is the root `t = 0`.
+    Surface,
 }
 
 /// A ray and a sphere: `(centre, radius, origin, direction, place)`.
@@ -288,6 +291,7 @@ fn ray_sphere(far: bool) -> impl Strategy<Value = RaySphereCase> {
         }),
         (0.0..0.99 as Real).prop_map(|depth| Place::Inside { depth }),
         (1.5..100.0 as Real).prop_map(|distance| Place::Behind { distance }),
+        Just(Place::Surface),
     ];
     let centre = (scale(), direction());
     (centre, scale(), direction(), direction(), place).prop_map(
@@ -301,10 +305,20 @@ fn ray_sphere(far: bool) -> impl Strategy<Value = RaySphereCase> {
                 }
                 Place::Inside { depth } => centre + radius * depth * across,
                 Place::Behind { distance } => centre + radius * distance * d,
+                Place::Surface => return on_surface(radius, side, d),
             };
             (centre, radius, origin, d, place)
         },
     )
+}
+
+/// A ray starting exactly on a sphere of `radius` around the origin, at the pole
+/// of `side`'s largest axis (so that `|s|^2 - R^2` is exactly 0), along `d`.
+fn on_surface(radius: Real, side: Vec3, d: Vec3) -> RaySphereCase {
+    let axis = side.abs().max_position();
+    let mut origin = Vec3::ZERO;
+    origin[axis] = radius.copysign(side[axis]);
+    (Vec3::ZERO, radius, origin, d, Place::Surface)
 }
 
 /// A ray-sphere test of the student's crate.
@@ -414,6 +428,10 @@ fn distance_diagnosis(
                 "la sphère est derrière le rayon\u{a0}: les deux racines sont négatives, et seul t > 0 est une intersection"
             )
         }
+        (Some(t), _, Place::Surface) if t <= 0.0 => say!(
+            "the ray starts on the sphere, so t = 0 is its own start, not a hit: only t > 0 is a hit (here where it leaves, if it goes in)",
+            "le rayon part de la sphère\u{a0}: t = 0 est son propre départ, pas une intersection\u{a0}; seul t > 0 en est une (ici là où il sort, s'il entre)"
+        ),
         (Some(t), _, _) if t <= 0.0 => say!(
             "only t > 0 is a hit: yours is behind the ray's origin",
             "seul t > 0 est une intersection\u{a0}: la vôtre est derrière l'origine du rayon"
@@ -425,6 +443,10 @@ fn distance_diagnosis(
         (Some(t), Some(_), Place::Outside { .. }) if close(t, far_root) => say!(
             "from outside, the hit is the nearer root -s.d - sqrt(Delta), where the ray enters; yours is where it leaves",
             "depuis l'extérieur, l'intersection est la racine proche -s.d - sqrt(Delta), où le rayon entre\u{a0}; la vôtre est où il sort"
+        ),
+        (None, Some(_), Place::Surface) => say!(
+            "the ray starts on the sphere and goes in: its near root is 0, its own start, but the far root -s.d + sqrt(Delta) is a hit",
+            "le rayon part de la sphère et y entre\u{a0}: sa racine proche vaut 0, son propre départ, mais la racine lointaine -s.d + sqrt(Delta) est une intersection"
         ),
         (None, Some(_), Place::Inside { .. }) => say!(
             "from inside the sphere the near root is negative, but the far root -s.d + sqrt(Delta) is a hit",

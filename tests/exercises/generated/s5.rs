@@ -314,7 +314,11 @@ fn slab_cases() -> impl Strategy<Value = SlabCase> {
             SlabCase {
                 bounds: (centre - 0.5 * extent, centre + 0.5 * extent),
                 ray: Ray::new(target - length * d, d),
-                t_max: t_max * (length + extent.length()),
+                t_max: if t_max.is_finite() {
+                    t_max * (length + extent.length())
+                } else {
+                    t_max
+                },
             }
         })
 }

@@ -79,6 +79,17 @@ pub const MISTAKES: &[Mistake] = &[
     },
     Mistake {
         exercise: "s1.2",
+        what: "t = 0 taken for a hit (t >= 0)",
+        run: || {
+            generated::sphere_distance(&Sphere::intersect_textbook, &|s, r| {
+                let (near, far) = roots(s, r);
+                near.filter(|&t| t >= 0.0).or(far.filter(|&t| t >= 0.0))
+            })
+        },
+        names: ["t = 0 is its own start", "t = 0 est son propre départ"],
+    },
+    Mistake {
+        exercise: "s1.2",
         what: "the near root only, from inside too",
         run: || {
             generated::sphere_distance(
@@ -87,8 +98,8 @@ pub const MISTAKES: &[Mistake] = &[
             )
         },
         names: [
-            "from inside the sphere the near root is negative",
-            "depuis l'intérieur de la sphère la racine proche est négative",
+            "but the far root -s.d + sqrt(Delta) is a hit",
+            "mais la racine lointaine -s.d + sqrt(Delta) est une intersection",
         ],
     },
     Mistake {
