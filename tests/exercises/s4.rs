@@ -145,6 +145,9 @@ fn disk() -> Outcome {
     close(&mean_of("x"), x, 0.0, 0.01)?;
     close(&mean_of("y"), y, 0.0, 0.01)?;
     close(&mean_of("r^2"), r2, 0.5, 0.01).map_err(|e| {
+        if (r2 - 1.0 / 3.0).abs() > 0.02 {
+            return e;
+        }
         say!(
             "{e}; with r = xi the points crowd the centre (1/3): uniform over the area needs r = sqrt(xi)",
             "{e}\u{a0}; avec r = xi, les points se massent au centre (1/3)\u{a0}: une répartition uniforme sur l'aire demande r = sqrt(xi)"

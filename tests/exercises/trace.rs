@@ -256,8 +256,8 @@ fn new_ray(y: &Step, c: &Step, before: &Step) -> String {
         Surface::Mirror => ("s2.4", "reflect"),
         Surface::Glass => ("s2.5", "refract"),
         Surface::Diffuse => (
-            "s3.1, s3.2, s4.1",
-            "sample_cosine_hemisphere, Frame::new, Cone::sample",
+            "s3.1, s3.2, s3.3, s4.1",
+            "sample_cosine_hemisphere, Frame::new, Tracer::indirect_light, Cone::sample",
         ),
     };
     say!(

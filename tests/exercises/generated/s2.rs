@@ -104,9 +104,11 @@ pub fn farthest_power() -> Real {
     }
 }
 
-/// A hit on a sphere: its centre, radius and where a ray from outside met it,
-/// at scales from `1e-4` to `1e4` and up to `1e8` away (`1e4` in single precision),
-/// made by the course's own functions.
+/// A hit on a sphere: its centre, radius and where a ray from outside or from
+/// inside met it, at scales from `1e-4` to `1e4` and up to `1e8` away (`1e4` in
+/// single precision), made by the course's own functions and turned to face the
+/// ray, as a diffuse surface's is: from inside, its normal points in, away from its
+/// offset, and only the new ray's direction against the offset decides its side.
 fn hits() -> impl Strategy<Value = (Vec3, Real, course::geometry::Hit)> {
     (
         direction(),
@@ -114,15 +116,20 @@ fn hits() -> impl Strategy<Value = (Vec3, Real, course::geometry::Hit)> {
         scale(),
         direction(),
         direction(),
+        any::<bool>(),
     )
-        .prop_map(|(towards, exponent, radius, at, side)| {
+        .prop_map(|(towards, exponent, radius, at, side, inside)| {
             let centre = (10.0 as Real).powf(exponent) * radius * towards;
-            let start = centre + 3.0 * radius * at;
-            let aim = centre + 0.5 * radius * side - start;
             let ball = course_sphere(centre, radius);
+            let (start, aim) = if inside {
+                (centre + 0.5 * radius * at, side)
+            } else {
+                let start = centre + 3.0 * radius * at;
+                (start, centre + 0.5 * radius * side - start)
+            };
             let ray = course::geometry::Ray::new(start, aim.normalize());
             let t = ball.intersect(&ray).unwrap_or(0.0);
-            (centre, radius, ball.hit_at(&ray, t, 0))
+            (centre, radius, ball.hit_at(&ray, t, 0).facing_the_ray())
         })
 }
 
@@ -194,8 +201,10 @@ fn spawn_fault(
     ray: &Ray,
     d: Vec3,
 ) -> Option<String> {
-    let (radius, outward) = (ball.radius, hit.normal);
+    // Outwards from the sphere, whichever way the hit's normal was turned.
+    let (radius, outward) = (ball.radius, (hit.point - ball.centre).normalize());
     let going_out = d.dot(outward) > 0.0;
+    let turned = hit.normal.dot(outward) < 0.0;
     let again = ball.intersect(&course::geometry::Ray::new(ray.origin, ray.direction));
     let chord = 2.0 * radius * d.dot(outward).abs();
     let reach = 1e-3 * radius + 4.0 * hit.offset.length();
@@ -204,6 +213,17 @@ fn spawn_fault(
         Some(say!(
             "the new ray keeps the direction it is given",
             "le nouveau rayon garde la direction donnée"
+        ))
+    } else if turned && again.is_some_and(|t| going_out || t < 0.5 * chord) {
+        Some(say!(
+            "{} it meets its sphere at t = {}: the hit's normal N was turned to face the ray, so it points into the sphere here; the side a new ray starts on is the side its direction takes against the offset (from the geometric normal), not against N",
+            "{} il rencontre sa sphère en t = {}\u{a0}: la normale N de l'intersection a été tournée vers le rayon, elle pointe donc ici dans la sphère\u{a0}; le côté d'où part un nouveau rayon est celui que prend sa direction par rapport au décalage (tiré de la normale géométrique), pas par rapport à N",
+            if going_out {
+                say!("Leaving outwards", "En sortant")
+            } else {
+                say!("Going in", "En entrant")
+            },
+            n(again.unwrap_or(0.0))
         ))
     } else if going_out && again.is_some() {
         Some(say!(

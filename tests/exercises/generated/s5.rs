@@ -25,6 +25,9 @@ pub struct TriangleCase {
     size: Real,
     /// How far from the triangle the ray starts: the distance to the hit.
     distance: Real,
+    /// Whether every number of the case is exact (powers of two), so that a point
+    /// on an edge is on it to the last bit and the answer is never in doubt.
+    exact: bool,
 }
 
 /// Corners of a generated triangle of `size` around `place`: any triangle, one
@@ -47,8 +50,51 @@ fn corners() -> impl Strategy<Value = ([Vec3; 3], Real, Vec3)> {
 /// Generated triangle cases: rays aimed at weights from -0.2 to 1.2 (so near and
 /// across every edge), from `1e-3` to `1e3` sizes away, along any direction or
 /// parallel to a flat triangle's plane (`d_z = +-0`), with `t_max` unbounded or
-/// a rounding before or after the hit.
+/// a rounding before or after the hit; and rays exactly through a corner or an
+/// edge.
 fn triangle_cases() -> impl Strategy<Value = TriangleCase> {
+    prop_oneof![4 => any_triangle_case(), 1 => edge_case()]
+}
+
+/// The triangle `(0, 0, 0), (s, 0, 0), (0, s, 0)` moved by whole sizes, `s` a
+/// power of two, and a ray straight down or up through a corner, the middle of an
+/// edge or a point inside, from a power of two away: every number is exact, so
+/// a point on an edge has a weight of exactly 0, or weights summing to exactly 1,
+/// and is a hit (`b_B >= 0`, `b_C >= 0`, `b_B + b_C <= 1`, edges included).
+fn edge_case() -> impl Strategy<Value = TriangleCase> {
+    let weights = prop_oneof![
+        Just((0.0 as Real, 0.0 as Real)),
+        Just((1.0, 0.0)),
+        Just((0.0, 1.0)),
+        Just((0.5, 0.0)),
+        Just((0.0, 0.5)),
+        Just((0.5, 0.5)),
+        Just((0.25, 0.25)),
+    ];
+    let shift = (-4i32..4, -4i32..4, -4i32..4);
+    (-10i32..10, shift, weights, -3i32..6, any::<bool>()).prop_map(
+        |(k, (i, j, l), (beta, gamma), away, up)| {
+            let size = (2.0 as Real).powi(k);
+            let a = size * Vec3::new(i as Real, j as Real, l as Real);
+            let corners = [a, a + size * Vec3::X, a + size * Vec3::Y];
+            let point = a + size * Vec3::new(beta, gamma, 0.0);
+            let distance = size * (2.0 as Real).powi(away);
+            let d = if up { Vec3::Z } else { -Vec3::Z };
+            TriangleCase {
+                corners,
+                ray: Ray::new(point - distance * d, d),
+                t_max: Real::INFINITY,
+                aimed: (beta, gamma),
+                size,
+                distance,
+                exact: true,
+            }
+        },
+    )
+}
+
+/// Generated triangle cases of any shape and place (see [`triangle_cases`]).
+fn any_triangle_case() -> impl Strategy<Value = TriangleCase> {
     let weight = || prop_oneof![-0.2..1.2 as Real, Just(0.0 as Real), Just(0.5 as Real)];
     let parallel = (-1.0..1.0 as Real, -1.0..1.0 as Real, any::<bool>())
         .prop_map(|(x, y, negative)| Vec3::new(x, y, if negative { -0.0 } else { 0.0 }));
@@ -77,6 +123,7 @@ fn triangle_cases() -> impl Strategy<Value = TriangleCase> {
                     aimed: (beta, gamma),
                     size,
                     distance,
+                    exact: false,
                 })
             },
         )
@@ -137,9 +184,10 @@ fn triangle_agrees(
     let tolerance = triangle_tolerance(case);
     let (beta, gamma) = case.aimed;
     let margin = beta.min(gamma).min(1.0 - beta - gamma);
-    let undecided = !tolerance.is_finite()
-        || margin.abs() <= tolerance
-        || (case.distance - case.t_max).abs() <= tolerance * case.distance;
+    let undecided = !case.exact
+        && (!tolerance.is_finite()
+            || margin.abs() <= tolerance
+            || (case.distance - case.t_max).abs() <= tolerance * case.distance);
     match (gave, expected) {
         (None, None) => true,
         (Some((t, b, g)), Some((te, be, ge))) => {
@@ -219,6 +267,15 @@ fn triangle_diagnosis(
 /// Why the student's test missed a hit of the course's at distance `t`, with
 /// the determinant `det`.
 fn missed_rule(t: Real, det: Real, case: &TriangleCase) -> String {
+    let (beta, gamma) = case.aimed;
+    if case.exact && beta.min(gamma).min(1.0 - beta - gamma) == 0.0 {
+        return say!(
+            "the point is on the triangle's edge or corner (b_B = {}, b_C = {}): edges belong to the triangle, b_B >= 0, b_C >= 0 and b_B + b_C <= 1, not strict",
+            "le point est sur une arête ou un sommet du triangle (b_B = {}, b_C = {})\u{a0}: les arêtes appartiennent au triangle, b_B >= 0, b_C >= 0 et b_B + b_C <= 1, au sens large",
+            n(beta),
+            n(gamma)
+        );
+    }
     // Several mistakes can miss the same hit: each that could is named.
     let rules = [
         (

@@ -41,6 +41,24 @@ pub const MISTAKES: &[Mistake] = &[
         names: ["here inwards (-N)", "ici vers l'intérieur (-N)"],
     },
     Mistake {
+        exercise: "s2.2",
+        what: "the side taken from the hit's normal, turned towards the ray, not from the offset",
+        run: || {
+            generated::spawn(|hit, direction| {
+                let side = if direction.dot(hit.normal) < 0.0 {
+                    -1.0
+                } else {
+                    1.0
+                };
+                Ray {
+                    origin: hit.point + side * hit.offset,
+                    direction,
+                }
+            })
+        },
+        names: ["not against N", "pas par rapport à N"],
+    },
+    Mistake {
         exercise: "s2.3",
         what: "the distance from the hit point",
         run: || {

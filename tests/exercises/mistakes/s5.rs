@@ -32,6 +32,20 @@ pub const MISTAKES: &[Mistake] = &[
         names: ["only t > 0 decides", "seul t > 0 décide"],
     },
     Mistake {
+        exercise: "s5.1",
+        what: "edges and corners left out (strict inequalities)",
+        run: || {
+            generated::intersect_triangle(|ray, a, b, c, t_max| {
+                moller_trumbore(ray, [a, b, c], t_max, 0.0, 0.0)
+                    .filter(|h| h.beta > 0.0 && h.gamma > 0.0 && h.beta + h.gamma < 1.0)
+            })
+        },
+        names: [
+            "edges belong to the triangle",
+            "les arêtes appartiennent au triangle",
+        ],
+    },
+    Mistake {
         exercise: "s5.2",
         what: "a miss when near >= far",
         run: || generated::slab(|bounds, ray, inv, t_max| slab(bounds, ray, inv, t_max, true)),
