@@ -81,10 +81,13 @@ pub const MISTAKES: &[Mistake] = &[
         exercise: "s1.2",
         what: "t = 0 taken for a hit (t >= 0)",
         run: || {
-            generated::sphere_distance(&Sphere::intersect_textbook, &|s, r| {
-                let (near, far) = roots(s, r);
-                near.filter(|&t| t >= 0.0).or(far.filter(|&t| t >= 0.0))
-            })
+            generated::sphere_distance(
+                &|s, r| {
+                    let (near, far) = roots(s, r);
+                    near.filter(|&t| t >= 0.0).or(far.filter(|&t| t >= 0.0))
+                },
+                &Sphere::intersect,
+            )
         },
         names: ["t = 0 is its own start", "t = 0 est son propre départ"],
     },
