@@ -72,10 +72,11 @@ fn course_manifest(text: &str) -> Result<String, String> {
     Ok(doc.to_string())
 }
 
-/// The dev-dependencies that an exercise crate's one test, the checklist, uses
-/// beside the course: the others serve tests that only the course's crate holds
-/// (snapshots, studies), and would lengthen a student's first build.
-const CHECKLIST_USES: &[&str] = &["proptest", "course"];
+/// The dev-dependencies that an exercise crate's tests use: the checklist's
+/// proptest and the course, and the unit tests' tempfile (in `src/`); the others
+/// serve tests that only the course's crate holds (snapshots, studies), and would
+/// lengthen a student's first build.
+const CHECKLIST_USES: &[&str] = &["proptest", "course", "tempfile"];
 
 /// The exercise crate's manifest `doc` with the course as a dev-dependency, and
 /// no dev-dependency the checklist does not use.
