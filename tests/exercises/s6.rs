@@ -183,19 +183,25 @@ fn build() -> Outcome {
     generated::bvh_build(Bvh::build)
 }
 
-/// A hierarchy made without the exercise's build: each node's triangles halved in
-/// the order of the file, a leaf at four or fewer. Its boxes overlap, but it is a
-/// hierarchy all the same, and the walk must find in it what testing every
-/// triangle finds.
-fn halving(mesh: &Mesh) -> Bvh {
-    let leaf = |order: &[u32], first: usize, count: usize| Node {
+/// A leaf of a hierarchy of `mesh` over `order[first..first + count]`: the box
+/// around those triangles.
+pub fn leaf_over(mesh: &Mesh, order: &[u32], first: usize, count: usize) -> Node {
+    Node {
         bounds: order[first..first + count]
             .iter()
             .flat_map(|&t| mesh.corners(t))
             .fold(Aabb::EMPTY, Aabb::grow),
         first: first as u32,
         count: count as u32,
-    };
+    }
+}
+
+/// A hierarchy made without the exercise's build: each node's triangles halved in
+/// the order of the file, a leaf at four or fewer. Its boxes overlap, but it is a
+/// hierarchy all the same, and the walk must find in it what testing every
+/// triangle finds.
+fn halving(mesh: &Mesh) -> Bvh {
+    let leaf = |order: &[u32], first, count| leaf_over(mesh, order, first, count);
     let order: Vec<u32> = (0..mesh.triangles.len() as u32).collect();
     let mut nodes = vec![leaf(&order, 0, order.len())];
     let mut pending = vec![0];

@@ -9,6 +9,7 @@ use raycourse::meshes::{Mesh, MeshHit};
 
 use super::Mistake;
 use crate::generated;
+use crate::s6::leaf_over;
 
 /// Session 6's mistakes.
 pub const MISTAKES: &[Mistake] = &[
@@ -131,14 +132,7 @@ pub const MISTAKES: &[Mistake] = &[
 /// chooses, or keeping it a leaf where `cut` gives none.
 fn build_cutting(mesh: &Mesh, cut: fn(&Aabb) -> Option<usize>) -> Bvh {
     let centroid = |t: u32| mesh.corners(t).iter().sum::<Vec3>() / 3.0;
-    let leaf = |order: &[u32], first: usize, count: usize| Node {
-        bounds: order[first..first + count]
-            .iter()
-            .flat_map(|&t| mesh.corners(t))
-            .fold(Aabb::EMPTY, Aabb::grow),
-        first: first as u32,
-        count: count as u32,
-    };
+    let leaf = |order: &[u32], first, count| leaf_over(mesh, order, first, count);
     let mut order: Vec<u32> = (0..mesh.triangles.len() as u32).collect();
     let mut nodes = vec![leaf(&order, 0, order.len())];
     let mut pending = vec![0];
