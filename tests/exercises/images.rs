@@ -100,7 +100,7 @@ pub fn check(stage: &Stage) -> Outcome {
         compare_exact(&displayed(&film, gamma), &read_8(&reference)?, gamma)
     };
     found.map_err(|why| {
-        let traced = crate::trace::trace(stage, &overrides(noisy, samples, None))
+        let traced = crate::trace::trace(stage, &overrides(noisy, samples, None), &film.pixels)
             .map(|found| then(&found))
             .unwrap_or_default();
         let saved = displayed(&film, gamma).save(&yours).is_ok();

@@ -90,11 +90,11 @@ fn course_overrides(overrides: &Overrides) -> course::Overrides {
     }
 }
 
-/// In a student's exercise crate, why the stage rendered with `overrides` differs
-/// from the course's: the first call along the path of the pixel the most off
-/// whose result differs. Nothing in the course's own crate, where the course is
+/// In a student's exercise crate, why the stage rendered with `overrides` (its
+/// pixels `rendered` by the student's code) differs from the course's: the first
+/// call along the path of the pixel the most off whose result differs. Nothing in the course's own crate, where the course is
 /// the code under test, or when the course's render is the same.
-pub fn trace(stage: &Stage, overrides: &Overrides) -> Option<String> {
+pub fn trace(stage: &Stage, overrides: &Overrides, rendered: &[Colour]) -> Option<String> {
     if !cfg!(course_answers) {
         return None;
     }
@@ -105,7 +105,7 @@ pub fn trace(stage: &Stage, overrides: &Overrides) -> Option<String> {
         .ok()?;
     let gamma = yours.settings.gamma;
     let (row, column) = most_off(
-        &raycourse::render(&yours).film.pixels,
+        rendered,
         &course::render(&theirs).film.pixels,
         yours.camera.width,
         gamma,
