@@ -303,6 +303,17 @@ pub fn all(root: &Path) -> Result<Vec<(Marker, String)>, String> {
     Ok(all)
 }
 
+/// The checklist's line of exercise `id`: an exercise of several functions (the
+/// textbook sphere test, then the robust one) has one line, named after the last of
+/// them, the one the renderer calls.
+pub fn line_of(all: &[(Marker, String)], id: &str) -> String {
+    all.iter()
+        .rev()
+        .find(|(marker, _)| marker.id == id)
+        .map(|(marker, _)| marker.test_name())
+        .unwrap_or_default()
+}
+
 /// The course's order of an exercise number: session, then number.
 pub fn order(id: &str) -> (u32, u32) {
     let mut parts = id
@@ -359,6 +370,20 @@ mod tests {
         let marker = &markers(TEXT).unwrap()[0];
         assert_eq!(marker.function, "Sphere::intersect");
         assert_eq!(marker.test_name(), "s1_2_sphere_intersect");
+    }
+
+    #[test]
+    fn an_exercise_of_two_functions_has_one_line_named_after_the_last() {
+        let marker = |function: &str| Marker {
+            function: function.into(),
+            ..Marker::parse(" Exercise s1.2, the ray-sphere distance: book session 1.").unwrap()
+        };
+        let all = vec![
+            (marker("Sphere::intersect_textbook"), String::new()),
+            (marker("Sphere::intersect"), String::new()),
+        ];
+        assert_eq!(line_of(&all, "s1.2"), "s1_2_sphere_intersect");
+        assert_eq!(line_of(&all, "s1.3"), "");
     }
 
     #[test]

@@ -68,13 +68,14 @@ fn run(args: &[String]) -> Result<(), String> {
             .try_for_each(|n| view::write_view(&root(), n, &Path::new(dir).join(format!("s{n}")))),
         ["exercise", n, dir, ref more @ ..] => exercise(session(n)?, Path::new(dir), more),
         ["exercises"] => {
-            for (marker, file) in exercise::all(&root())? {
+            let all = exercise::all(&root())?;
+            for (marker, file) in &all {
                 println!(
                     "{}\t{}\t{}\t{}",
                     marker.id,
                     marker.function,
                     file,
-                    marker.test_name()
+                    exercise::line_of(&all, &marker.id)
                 );
             }
             Ok(())
