@@ -88,6 +88,7 @@ pub fn depend_on_course(doc: &mut DocumentMut) {
         doc["dev-dependencies"] = toml_edit::table();
     }
     doc["dev-dependencies"]["course"] = toml_edit::value(course);
+    build_checklist_quickly(doc);
     if let Some(table) = doc["dev-dependencies"].as_table_like_mut() {
         let unused: Vec<String> = table
             .iter()
@@ -98,6 +99,21 @@ pub fn depend_on_course(doc: &mut DocumentMut) {
             table.remove(&name);
         }
     }
+}
+
+/// The checklist's build, quicker to compile: the student's crate at `opt-level` 2
+/// rather than 3 (its stages render small, at about the same speed), and the
+/// course's crate without optimisation, which the checklist calls on a few hundred
+/// inputs per exercise and never renders with, and which then compiles in a third
+/// of the time.
+fn build_checklist_quickly(doc: &mut DocumentMut) {
+    doc["profile"]["test"]["opt-level"] = toml_edit::value(2);
+    let mut course = toml_edit::Table::new();
+    course["opt-level"] = toml_edit::value(0);
+    let mut packages = toml_edit::Table::new();
+    packages.set_implicit(true);
+    packages["raycourse-course"] = toml_edit::Item::Table(course);
+    doc["profile"]["test"]["package"] = toml_edit::Item::Table(packages);
 }
 
 #[cfg(test)]
@@ -128,5 +144,16 @@ mod tests {
         assert!(doc["dependencies"].get("course").is_none());
         assert!(doc["dev-dependencies"].get("insta").is_none());
         assert!(doc["dev-dependencies"].get("proptest").is_some());
+        assert_eq!(
+            doc["profile"]["test"]["package"]["raycourse-course"]["opt-level"].as_integer(),
+            Some(0)
+        );
+        assert_eq!(doc["profile"]["test"]["opt-level"].as_integer(), Some(2));
+        let text = doc.to_string();
+        assert!(
+            text.contains("[profile.test.package.raycourse-course]\nopt-level = 0\n"),
+            "{text}"
+        );
+        assert!(!text.contains("[profile.test.package]\n"), "{text}");
     }
 }

@@ -7,7 +7,9 @@
 //! `tests/course/`, see [`crate::course`]), then each stage's image against the
 //! reference image that ships beside it. The view's other tests
 //! (snapshots to the byte, the unit tests inside the files) pin the course's own
-//! code and would fail for a right answer written another way, so they are left out.
+//! code and would fail for a right answer written another way, so they are left out,
+//! and so is the checklist's catalogue of mistakes, which runs against the course's
+//! crate itself.
 
 use std::fs;
 use std::path::Path;
@@ -40,7 +42,12 @@ pub fn write_exercises(root: &Path, choice: &Choice, out: &Path) -> Result<Vec<M
     }
     write_view(root, choice.session, out)?;
     write_course(out)?;
-    for left_out in ["tests/suite", "tests/snapshots", "tests/bad-input"] {
+    for left_out in [
+        "tests/suite",
+        "tests/snapshots",
+        "tests/bad-input",
+        "tests/exercises/mistakes",
+    ] {
         remove(&out.join(left_out))?;
     }
     remove(&out.join("tests/stages.rs"))?;

@@ -42,7 +42,7 @@ pub use s6::*;
 #[cfg(feature = "s7")]
 pub use s7::*;
 
-use proptest::strategy::Strategy;
+use proptest::strategy::{BoxedStrategy, Strategy};
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 use raycourse::maths::{Real, Vec3};
 
@@ -64,7 +64,7 @@ const SEED: [u8; 32] = *b"raycourse: the course's answers.";
 /// Runs `compare` on `CASES` inputs drawn from `inputs`; on a difference, proptest
 /// shrinks the input to the simplest that still differs and the outcome is that
 /// case's message, after `what` (the exercise's function).
-pub fn on_generated<S: Strategy>(
+pub fn on_generated<S: Strategy + 'static>(
     what: &str,
     inputs: S,
     compare: impl Fn(S::Value) -> Result<(), String>,
@@ -74,11 +74,23 @@ pub fn on_generated<S: Strategy>(
 
 /// [`on_generated`] on `cases` inputs: fewer for the checks whose every input
 /// costs thousands of samples.
-pub fn on_generated_cases<S: Strategy>(
+pub fn on_generated_cases<S: Strategy + 'static>(
     what: &str,
     cases: u32,
     inputs: S,
     compare: impl Fn(S::Value) -> Result<(), String>,
+) -> Outcome {
+    run_cases(what, cases, inputs.boxed(), &compare)
+}
+
+/// [`on_generated_cases`] on a boxed strategy and a comparison behind a reference:
+/// proptest's runner is compiled once for each type of input rather than once for
+/// each check, which keeps the checklist quick to build.
+fn run_cases<T: std::fmt::Debug>(
+    what: &str,
+    cases: u32,
+    inputs: BoxedStrategy<T>,
+    compare: &dyn Fn(T) -> Result<(), String>,
 ) -> Outcome {
     if std::env::var_os(KNOWN_ONLY).is_some() {
         return Ok(());
