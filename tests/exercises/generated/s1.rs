@@ -621,7 +621,8 @@ pub fn lambert(yours: impl Fn(&PointLight, Vec3, Vec3, Colour) -> Colour) -> Out
                 v(normal),
                 v(albedo)
             );
-            let why = lambert_diagnosis(gave, expected, normal.dot(towards), distance);
+            let why = lambert_diagnosis(gave, expected, normal.dot(towards), distance)
+                .or_else(|| lit_from_the_origin(gave, (&course, point, normal, albedo)));
             Err(differs(&case, &v(gave), &v(expected), why))
         },
     )
@@ -644,6 +645,25 @@ fn lambert_diagnosis(gave: Colour, expected: Colour, cos: Real, d: Real) -> Opti
         .into_iter()
         .find(|(r, _)| (ratio / r - 1.0).abs() < 1e-4)
         .map(|(_, why)| why)
+}
+
+/// Whether `gave` is Lambert's shading with `l` taken from the origin to the light,
+/// the light's position normalised, rather than from the shaded point: the two
+/// agree only for a point on the line from the origin to the light.
+fn lit_from_the_origin(
+    gave: Colour,
+    (light, point, normal, albedo): (&course::lights::PointLight, Vec3, Vec3, Colour),
+) -> Option<String> {
+    let d2 = light.position.distance_squared(point);
+    let cos = normal.dot(light.position.normalize()).max(0.0);
+    let origin = light.intensity / (4.0 * PI * d2) * cos * albedo / PI;
+    let full = light.intensity / (4.0 * PI * d2) / PI;
+    ((gave - origin).abs().max_element() <= ulps(64.0) * full).then(|| {
+        say!(
+            "l points from the shaded point P to the light: l = (P_light - P) / |P_light - P|, not P_light / |P_light|",
+            "l va du point éclairé P vers la source\u{a0}: l = (P_source - P) / |P_source - P|, et non P_source / |P_source|"
+        )
+    })
 }
 
 /// The ratios of a wrong Lambert shading to the right one that name a mistake,

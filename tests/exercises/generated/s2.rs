@@ -56,6 +56,12 @@ fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
             "une luminance négative ou NaN s'affiche en noir, 0\u{a0}: ramenez-la à 0 avant la puissance"
         ));
     }
+    if radiance == Real::INFINITY {
+        return Some(say!(
+            "an infinite radiance is the brightest there is: min(255, L^(1/gamma)) = 255",
+            "une luminance infinie est la plus claire qui soit\u{a0}: min(255, L^(1/gamma)) = 255"
+        ));
+    }
     let level = |x: Real| x.clamp(0.0, 255.0);
     let exact = level(radiance.powf(1.0 / gamma));
     let gave = gave as Real;
@@ -362,6 +368,12 @@ pub fn reflect(yours: impl Fn(Vec3, Vec3) -> Vec3) -> Outcome {
                 "yours points the other way: r = d - 2 (d . N) N",
                 "le vôtre pointe dans l'autre sens\u{a0}: r = d - 2 (d . N) N"
             )
+        } else if gave == d {
+            say!(
+                "yours leaves d as it is; every ray the mirror meets turns, even a grazing one, here d . N = {}: r = d - 2 (d . N) N",
+                "le vôtre laisse d tel quel\u{a0}; tout rayon qui touche le miroir repart, même rasant, ici d . N = {}\u{a0}: r = d - 2 (d . N) N",
+                n(along)
+            )
         } else if near_vec(gave, d - along * normal, ulps(64.0)) {
             say!(
                 "yours removes the normal part; subtracted twice, it turns around: r = d - 2 (d . N) N",
@@ -381,10 +393,10 @@ pub fn reflect(yours: impl Fn(Vec3, Vec3) -> Vec3) -> Outcome {
 }
 
 /// Exercise s2.5 on generated directions, normals and index ratios from 0.3 to
-/// 3, grazing and head-on among them. Where `eta^2 sin^2(theta_1)` lies within
-/// `sqrt(epsilon)` of 1 the two answers may rightly disagree on total internal
-/// reflection, so such cases are left out; elsewhere the directions agree within
-/// `sqrt(epsilon)`.
+/// 3, grazing and head-on among them, and on purpose near the critical angle,
+/// from either side. Where `eta^2 sin^2(theta_1)` lies within `sqrt(epsilon)` of 1
+/// the two answers may rightly disagree on total internal reflection, so such
+/// cases are left out; elsewhere the directions agree within `sqrt(epsilon)`.
 pub fn refract(yours: impl Fn(Vec3, Vec3, Real) -> Option<Vec3>) -> Outcome {
     let eta = prop_oneof![
         Just(1.0 as Real),
@@ -392,10 +404,12 @@ pub fn refract(yours: impl Fn(Vec3, Vec3, Real) -> Option<Vec3>) -> Outcome {
         Just(1.5 as Real),
         0.3..3.0 as Real
     ];
-    let inputs =
-        (towards_surface(), eta).prop_filter("not at the critical angle", |((normal, d), eta)| {
+    let inputs = prop_oneof![3 => (towards_surface(), eta), 1 => near_critical()].prop_filter(
+        "not at the critical angle",
+        |((normal, d), eta)| {
             (sin2_transmitted(*d, *normal, *eta) - 1.0).abs() > Real::EPSILON.sqrt()
-        });
+        },
+    );
     on_generated("refract", inputs, |((normal, d), eta)| {
         let gave = yours(d, normal, eta);
         let expected = course::materials::optics::refract(d, normal, eta);
@@ -421,6 +435,27 @@ pub fn refract(yours: impl Fn(Vec3, Vec3, Real) -> Option<Vec3>) -> Outcome {
         let why = refract_rule((d, normal, eta), gave, expected);
         Err(differs(&case, &show(gave), &show(expected), Some(why)))
     })
+}
+
+/// A ray leaving a denser medium (`eta` from 1.05 to 3) at an angle whose
+/// `eta^2 sin^2(theta_1)` is `1 -+ 10^-k`, `k` from 1 to 7: just before the
+/// critical angle, where it still refracts, and just past it.
+fn near_critical() -> impl Strategy<Value = ((Vec3, Vec3), Real)> {
+    (
+        direction(),
+        direction(),
+        1.05..3.0 as Real,
+        1i32..=7,
+        any::<bool>(),
+    )
+        .prop_map(|(normal, across, eta, k, past)| {
+            let step = (10.0 as Real).powi(-k);
+            let sin2 = (if past { 1.0 + step } else { 1.0 - step }) / (eta * eta);
+            let tangent = (across - across.dot(normal) * normal)
+                .normalize_or(normal.any_orthonormal_vector());
+            let d = sin2.sqrt() * tangent - (1.0 - sin2).sqrt() * normal;
+            ((normal, d.normalize()), eta)
+        })
 }
 
 /// `eta^2 sin^2(theta_1)`, which is `sin^2(theta_2)` where the ray refracts.

@@ -24,11 +24,18 @@ fn unit_above(w: Vec3, u1: Real, u2: Real) -> Result<(), String> {
     if w.is_finite() && (w.length() - 1.0).abs() <= ulps(1024.0) && w.z >= -ulps(64.0) {
         return Ok(());
     }
-    Err(say!(
+    let gave = say!(
         "{} gave {}: expected a unit vector with z >= 0",
         "{} donne {}\u{a0}: attendu un vecteur unitaire avec z >= 0",
         at(u1, u2),
         v(w)
+    );
+    if w.is_finite() {
+        return Err(gave);
+    }
+    Err(say!(
+        "{gave}; every u in [0, 1) gives a direction, 0 included: a division by u (or by 0) is undefined there, as with tan^2(theta) = (1 - u2) / u2; r = sqrt(1 - u2) and z = sqrt(u2) divide by nothing",
+        "{gave}\u{a0}; tout u de [0, 1) donne une direction, 0 compris\u{a0}: une division par u (ou par 0) n'y est pas définie, comme avec tan^2(theta) = (1 - u2) / u2\u{a0}; r = sqrt(1 - u2) et z = sqrt(u2) ne divisent par rien"
     ))
 }
 

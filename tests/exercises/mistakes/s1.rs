@@ -175,6 +175,18 @@ pub const MISTAKES: &[Mistake] = &[
     },
     Mistake {
         exercise: "s1.4",
+        what: "l from the origin to the light, the light's position normalised",
+        run: || {
+            generated::lambert(|light: &PointLight, point, normal, albedo: Colour| {
+                let d2 = light.position.distance_squared(point);
+                let cos = normal.dot(light.position.normalize()).max(0.0);
+                light.intensity / (4.0 * PI * d2) * cos * albedo / PI
+            })
+        },
+        names: ["not P_light / |P_light|", "et non P_source / |P_source|"],
+    },
+    Mistake {
+        exercise: "s1.4",
         what: "l not normalised",
         run: || lambert_with_cosine(|normal, to_light| normal.dot(to_light).max(0.0)),
         names: [

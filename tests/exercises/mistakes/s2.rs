@@ -27,6 +27,24 @@ pub const MISTAKES: &[Mistake] = &[
         names: ["use the gamma given", "utilisez le gamma donné"],
     },
     Mistake {
+        exercise: "s2.1",
+        what: "every radiance that is not finite shown black",
+        run: || {
+            generated::display(|radiance, gamma| {
+                let v = radiance.max(0.0).powf(1.0 / gamma).min(255.0);
+                if radiance.is_finite() {
+                    v.round() as u8
+                } else {
+                    0
+                }
+            })
+        },
+        names: [
+            "an infinite radiance is the brightest there is",
+            "une luminance infinie est la plus claire qui soit",
+        ],
+    },
+    Mistake {
         exercise: "s2.2",
         what: "a fixed epsilon of 1e-4",
         run: || generated::spawn(|hit, direction| hit.spawn_with_epsilon(direction, 1e-4)),
@@ -104,6 +122,20 @@ pub const MISTAKES: &[Mistake] = &[
         ],
     },
     Mistake {
+        exercise: "s2.4",
+        what: "a ray within 1e-4 of grazing left as it is (a fixed epsilon)",
+        run: || {
+            generated::reflect(|d, normal| {
+                if d.dot(normal).abs() < 1e-4 {
+                    d
+                } else {
+                    raycourse::materials::optics::reflect(d, normal)
+                }
+            })
+        },
+        names: ["even a grazing one", "même rasant"],
+    },
+    Mistake {
         exercise: "s2.5",
         what: "eta upside down",
         run: || {
@@ -126,6 +158,21 @@ pub const MISTAKES: &[Mistake] = &[
         names: [
             "total internal reflection: eta^2",
             "réflexion totale interne\u{a0}: eta^2",
+        ],
+    },
+    Mistake {
+        exercise: "s2.5",
+        what: "total internal reflection from eta^2 sin^2 > 0.999 (a fixed epsilon)",
+        run: || {
+            generated::refract(|d, normal, eta| {
+                let parallel = d - d.dot(normal) * normal;
+                let sin2_t = eta * eta * parallel.length_squared();
+                (sin2_t <= 0.999).then(|| eta * parallel - (1.0 - sin2_t).sqrt() * normal)
+            })
+        },
+        names: [
+            "<= 1: the ray refracts",
+            "<= 1\u{a0}: le rayon est réfracté",
         ],
     },
 ];

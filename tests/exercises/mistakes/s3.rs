@@ -11,6 +11,18 @@ use crate::generated;
 /// Session 3's mistakes.
 pub const MISTAKES: &[Mistake] = &[
     Mistake {
+        exercise: "s3.1",
+        what: "theta through tan^2(theta) = (1 - u2) / u2, undefined at u2 = 0",
+        run: || {
+            generated::cosine_direction(|u1, u2| {
+                let tan2 = (1.0 - u2) / u2;
+                let (r, phi) = ((tan2 / (1.0 + tan2)).sqrt(), 2.0 * PI * u1);
+                Vec3::new(r * phi.cos(), r * phi.sin(), (1.0 / (1.0 + tan2)).sqrt())
+            })
+        },
+        names: ["0 included", "0 compris"],
+    },
+    Mistake {
         exercise: "s3.2",
         what: "a left-handed frame, T1 and T2 exchanged",
         run: || {
