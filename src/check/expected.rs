@@ -5,7 +5,7 @@ use std::num::NonZeroU32;
 use std::path::Path;
 
 use crate::files::Files;
-use crate::render::cache::cached_render;
+use crate::render::cache::{Films, cached_render};
 use crate::render::{Film, Render};
 use crate::render_reporting;
 use crate::scene::Scene;
@@ -84,8 +84,9 @@ pub struct Source<'a> {
     pub stage: &'a Stage,
     /// Width and height of the student's image.
     pub size: (u32, u32),
-    /// Folder of cached renders.
-    pub cache: &'a Path,
+    /// Where the references are kept: a folder ([`crate::render::cache::Folder`]),
+    /// or memory.
+    pub cache: &'a dyn Films,
     /// Where the stage's meshes and textures are read.
     pub files: &'a dyn Files,
     /// Told how many samples of each row are done, for a progress bar.

@@ -1,8 +1,11 @@
 //! Grading a student's folder of images, or a class of students' folders: a grade
 //! for each stage of the build, and the grading sheet a teacher opens in a
-//! spreadsheet.
+//! spreadsheet. The folders are on disk for the command (`check --all`), or files
+//! given to the book's check page; both find, read and grade the images alike.
 
 use std::path::{Path, PathBuf};
+
+use image::RgbImage;
 
 use crate::check::language::Language;
 use crate::check::report::{Report, Verdict};
@@ -61,43 +64,115 @@ impl Grade {
     }
 }
 
+/// Which files there are: the disk's (`Path::exists`), or those given to a page.
+pub type Exists<'a> = &'a dyn Fn(&Path) -> bool;
+
+/// The files on disk.
+pub const ON_DISK: Exists = &|path| path.exists();
+
 /// The image of `stage` in `dir`: `glass.png`, `glass.jpg`, `glass.jpeg` or
-/// `glass.ppm`, the first that exists.
-pub fn image_of(dir: &Path, stage: &Stage) -> Option<PathBuf> {
+/// `glass.ppm`, the first that `exists`.
+pub fn image_of(dir: &Path, stage: &Stage, exists: Exists) -> Option<PathBuf> {
     ["png", "jpg", "jpeg", "ppm"]
         .iter()
         .map(|e| dir.join(format!("{}.{e}", stage.name)))
-        .find(|p| p.exists())
+        .find(|p| exists(p))
 }
 
 /// The image of any stage of the build in `dir`, if there is one.
-pub fn image_of_any_stage(dir: &Path) -> Option<PathBuf> {
-    stages().find_map(|stage| image_of(dir, stage))
+pub fn image_of_any_stage(dir: &Path, exists: Exists) -> Option<PathBuf> {
+    stages().find_map(|stage| image_of(dir, stage, exists))
+}
+
+/// The image in `bytes`, the file `path`, read as its extension says (PNG, JPEG or
+/// PPM), in 8-bit RGB; or why it cannot be read, naming the file.
+pub fn decode(path: &Path, bytes: &[u8]) -> Result<RgbImage, String> {
+    let mut reader = image::ImageReader::new(std::io::Cursor::new(bytes));
+    if let Ok(format) = image::ImageFormat::from_path(path) {
+        reader.set_format(format);
+    }
+    let image = reader.decode().map_err(|e| {
+        format!(
+            "{}: not a PNG, JPEG or PPM image that can be read: {e}",
+            path.display()
+        )
+    })?;
+    Ok(image.to_rgb8())
+}
+
+/// Whether the file `path` is a JPEG, whose compression blurs edges a little.
+pub fn lossy(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("jpg") || e.eq_ignore_ascii_case("jpeg"))
 }
 
 /// The students' folders of a class folder, sorted by name (a `reference` folder
 /// of cached references aside).
 pub fn students(dir: &Path) -> std::io::Result<Vec<PathBuf>> {
-    let mut folders: Vec<PathBuf> = std::fs::read_dir(dir)?
+    let folders = std::fs::read_dir(dir)?
         .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.is_dir() && p.file_name().is_some_and(|n| n != "reference"))
+        .filter(|p| p.is_dir());
+    Ok(students_among(folders))
+}
+
+/// The students' folders among `folders`, sorted by name, without duplicates and
+/// without the `reference` folder of cached references.
+pub fn students_among(folders: impl IntoIterator<Item = PathBuf>) -> Vec<PathBuf> {
+    let mut folders: Vec<PathBuf> = folders
+        .into_iter()
+        .filter(|p| p.file_name().is_some_and(|n| n != "reference"))
         .collect();
     folders.sort();
-    Ok(folders)
+    folders.dedup();
+    folders
 }
 
 /// Each stage of the build with its grade in `dir`: [`Grade::Missing`] where the
 /// folder has no image of it, otherwise what `grade` says of the image's path.
 pub fn grade_folder<E>(
     dir: &Path,
+    exists: Exists,
     mut grade: impl FnMut(&'static Stage, &Path) -> Result<Grade, E>,
 ) -> Result<Vec<(&'static Stage, Grade)>, E> {
     stages()
-        .map(|stage| match image_of(dir, stage) {
+        .map(|stage| match image_of(dir, stage, exists) {
             None => Ok((stage, Grade::Missing)),
             Some(path) => grade(stage, &path).map(|g| (stage, g)),
         })
         .collect()
+}
+
+/// A student's line of a class's grading: how many stages match, and which differ
+/// or cannot be read.
+pub fn student_line(name: &str, grades: &[(&Stage, Grade)]) -> String {
+    let matching = grades.iter().filter(|(_, g)| g.word() == "matches").count();
+    let differing: Vec<&str> = grades
+        .iter()
+        .filter(|(_, g)| !g.passes())
+        .map(|(s, _)| s.name)
+        .collect();
+    let differing = match differing.is_empty() {
+        true => "none".to_owned(),
+        false => differing.join(", "),
+    };
+    format!(
+        "{name:<20} {matching:>2} of {} match; differ: {differing}",
+        grades.len()
+    )
+}
+
+/// The lines of a folder's grading: a header, then each stage's verdict and hint.
+pub fn folder_lines(grades: &[(&Stage, Grade)], language: Language) -> Vec<String> {
+    let mut lines = vec![format!("{:<17} {:<10} hint", "stage", "verdict")];
+    for (stage, grade) in grades {
+        lines.push(format!(
+            "{:<17} {:<10} {}",
+            stage.name,
+            grade.word(),
+            grade.hint(language)
+        ));
+    }
+    lines
 }
 
 /// The grading sheet of one folder: a row per stage with its session, figure,

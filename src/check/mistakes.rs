@@ -355,11 +355,14 @@ impl Candidates<'_> {
         } else {
             changed
         };
-        let file = self.source.cache.join(format!(
+        let Some(folder) = self.source.cache.folder() else {
+            return Ok(None);
+        };
+        let file = folder.join(format!(
             "texture-{}.png",
             if flip { "flipped" } else { "raw" }
         ));
-        if std::fs::create_dir_all(self.source.cache).is_err() || changed.save(&file).is_err() {
+        if std::fs::create_dir_all(folder).is_err() || changed.save(&file).is_err() {
             return Ok(None);
         }
         let path = toml::Value::String(file.to_string_lossy().into_owned());

@@ -10,10 +10,12 @@ use image::RgbImage;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::check::expected::{Renderer, Source};
 use raycourse::check::grading::{
-    Grade, class_sheet, folder_sheet, grade_folder, image_of_any_stage, students,
+    Grade, ON_DISK, class_sheet, decode, folder_lines, folder_sheet, grade_folder,
+    image_of_any_stage, lossy, student_line, students,
 };
 use raycourse::check::language::Language;
 use raycourse::check::report::{Report, Verdict, check};
+use raycourse::render::cache::Folder;
 use raycourse::{Stage, stages};
 
 use crate::commands::Verb;
@@ -113,13 +115,9 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
 
 /// The image at `path`, as 8-bit RGB; a bad input otherwise.
 fn read_image(path: &Path) -> Result<RgbImage, Failure> {
-    let image = image::open(path).map_err(|e| {
-        Failure::Input(format!(
-            "{}: not a PNG, JPEG or PPM image that can be read: {e}",
-            path.display()
-        ))
-    })?;
-    Ok(image.to_rgb8())
+    let bytes =
+        std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+    decode(path, &bytes).map_err(Failure::Input)
 }
 
 /// Checks `image` (read from `path`) against `stage`, rendering on the options'
@@ -144,15 +142,12 @@ fn check_one(
     let source = Source {
         stage,
         size: image.dimensions(),
-        cache: &args.cache,
+        cache: &Folder(&args.cache),
         files: &raycourse::Disk,
         progress: &progress,
         renderer: RENDERER,
     };
-    let lossy = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("jpg") || e.eq_ignore_ascii_case("jpeg"));
-    let report = pool.install(|| check(&source, image, lossy));
+    let report = pool.install(|| check(&source, image, lossy(path)));
     bar.finish_and_clear();
     Ok(report?)
 }
@@ -173,8 +168,11 @@ fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
         return Err(Failure::Input(format!("{}: not a folder", dir.display())));
     }
     let students = students(dir).map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
-    if image_of_any_stage(dir).is_none() {
-        if students.iter().all(|s| image_of_any_stage(s).is_none()) {
+    if image_of_any_stage(dir, ON_DISK).is_none() {
+        if students
+            .iter()
+            .all(|s| image_of_any_stage(s, ON_DISK).is_none())
+        {
             return Err(Failure::Input(format!(
                 "{}: no image of a stage here, nor in a student's folder: name each image after \
                  its stage, such as glass.png (`raycourse list` gives the stages)",
@@ -184,15 +182,9 @@ fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
         return grade_class(args, dir, &students);
     }
     let language = args.language();
-    let grades = grade_folder(dir, |stage, path| check_image(args, stage, path))?;
-    println!("{:<17} {:<10} hint", "stage", "verdict");
-    for (stage, grade) in &grades {
-        println!(
-            "{:<17} {:<10} {}",
-            stage.name,
-            grade.word(),
-            grade.hint(language)
-        );
+    let grades = grade_folder(dir, ON_DISK, |stage, path| check_image(args, stage, path))?;
+    for line in folder_lines(&grades, language) {
+        println!("{line}");
     }
     write_sheet(args, dir, &folder_sheet(&grades, language))?;
     finish(grades.iter().all(|(_, grade)| grade.passes()))
@@ -204,21 +196,10 @@ fn grade_class(args: &CheckArgs, dir: &Path, students: &[PathBuf]) -> Result<(),
     let mut class = vec![];
     for folder in students {
         let name = folder.file_name().unwrap_or_default().to_string_lossy();
-        let grades = grade_folder(folder, |stage, path| check_image(args, stage, path))?;
-        let matching = grades.iter().filter(|(_, g)| g.word() == "matches").count();
-        let differing: Vec<&str> = grades
-            .iter()
-            .filter(|(_, g)| !g.passes())
-            .map(|(s, _)| s.name)
-            .collect();
-        let differing = match differing.is_empty() {
-            true => "none".to_owned(),
-            false => differing.join(", "),
-        };
-        println!(
-            "{name:<20} {matching:>2} of {} match; differ: {differing}",
-            grades.len()
-        );
+        let grades = grade_folder(folder, ON_DISK, |stage, path| {
+            check_image(args, stage, path)
+        })?;
+        println!("{}", student_line(&name, &grades));
         class.push((name.into_owned(), grades));
     }
     write_sheet(args, dir, &class_sheet(&class, args.language()))?;

@@ -10,7 +10,7 @@ use indicatif::ProgressBar;
 use raycourse::engines::render_reporting;
 use raycourse::maths::Real;
 use raycourse::render::Film;
-use raycourse::render::cache::{cached_render, reference_file};
+use raycourse::render::cache::{Folder, cached_render, reference_file};
 use raycourse::scene::beyond::Beyond;
 use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
 use raycourse::studies::convergence::{Rung, climb, fitted_slope, sample_ladder};
@@ -232,7 +232,7 @@ fn reference(
     bar.set_message(format!("reference, {} spp", truth.settings.samples));
     let progress = |done| bar.inc(done);
     let render = |progress: &(dyn Fn(u64) + Sync)| render_reporting(truth, beyond, progress).film;
-    let (film, saved) = cached_render(&args.cache, text, truth, &progress, render);
+    let (film, saved) = cached_render(&Folder(&args.cache), text, truth, &progress, render);
     if let Err(e) = saved {
         eprintln!(
             "warning: {}: cannot keep the reference, so the next run renders it again: {e}",

@@ -1,9 +1,12 @@
-//! Films cached on disk: a reference image (what `check` compares a student's image
-//! with, what a study measures its renders against) is expensive, so it is rendered
-//! once per scene and setting.
+//! Films cached: a reference image (what `check` compares a student's image with,
+//! what a study measures its renders against) is expensive, so it is rendered once
+//! per scene and setting, and kept in a folder on disk (the command's) or in memory
+//! (the book's check page, which has no disk, grading a class).
 
+use std::collections::HashMap;
 use std::hash::{DefaultHasher, Hash, Hasher};
 use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
 use crate::maths::{Colour, Real, to_double};
 use crate::render::Film;
@@ -61,45 +64,125 @@ pub fn save_reference(path: &Path, film: &Film) -> std::io::Result<()> {
     write_atomically(path, &bytes)
 }
 
-/// Where the reference of `scene` is kept in `dir`: `text` is the scene file's
-/// text, edits included, and with the size, the samples and the seed it names the
-/// file ([`reference_path`]).
-pub fn reference_file(dir: &Path, text: &str, scene: &Scene) -> PathBuf {
+/// What names the reference of `scene`: `text`, the scene file's text, edits
+/// included, with the size, the samples and the seed.
+pub fn reference_key(text: &str, scene: &Scene) -> String {
     let (camera, settings) = (scene.camera, scene.settings);
-    let key = format!(
+    format!(
         "{text}\n{}x{}, {} spp, seed {}",
         camera.width, camera.height, settings.samples, settings.seed
-    );
-    reference_path(dir, &key)
+    )
 }
 
-/// The film of `scene` from the folder of references `dir`, if it was rendered
-/// before, else rendered by `render` (which tells `progress` its work as it goes)
-/// and kept there. `text` is the scene file's text, edits included: with the
-/// size, the samples and the seed it names the file, so that any change renders
-/// anew. A film read from `dir` tells `progress` all its work at once. The second
-/// value says whether the film could be kept: a folder that cannot be written only
-/// costs time on the next run, so the caller decides what to say.
+/// Where the reference of `scene` is kept in `dir` ([`reference_key`] names the
+/// file, see [`reference_path`]).
+pub fn reference_file(dir: &Path, text: &str, scene: &Scene) -> PathBuf {
+    reference_path(dir, &reference_key(text, scene))
+}
+
+/// Where references are kept, each under its [`reference_key`].
+pub trait Films: Sync {
+    /// The film kept under `key`, if there is one.
+    fn load(&self, key: &str) -> Option<Film>;
+    /// Keeps `film` under `key`.
+    fn save(&self, key: &str, film: &Film) -> std::io::Result<()>;
+    /// The folder where files a reference needs (a changed texture) may be written,
+    /// if the references are kept in one.
+    fn folder(&self) -> Option<&Path> {
+        None
+    }
+}
+
+/// References kept as files in a folder ([`reference_path`]), from one run to the
+/// next.
+pub struct Folder<'a>(pub &'a Path);
+
+impl Films for Folder<'_> {
+    fn load(&self, key: &str) -> Option<Film> {
+        load_reference(&reference_path(self.0, key))
+    }
+
+    fn save(&self, key: &str, film: &Film) -> std::io::Result<()> {
+        save_reference(&reference_path(self.0, key), film)
+    }
+
+    fn folder(&self) -> Option<&Path> {
+        Some(self.0)
+    }
+}
+
+/// References kept in memory for as long as the value lives: a page grading a class
+/// renders each stage's reference once for all its students.
+#[derive(Default)]
+pub struct InMemory(Mutex<HashMap<String, Film>>);
+
+impl InMemory {
+    /// How many references are kept.
+    pub fn len(&self) -> usize {
+        self.0.lock().map_or(0, |films| films.len())
+    }
+
+    /// Whether none is.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+impl Films for InMemory {
+    fn load(&self, key: &str) -> Option<Film> {
+        self.0.lock().ok()?.get(key).cloned()
+    }
+
+    fn save(&self, key: &str, film: &Film) -> std::io::Result<()> {
+        if let Ok(mut films) = self.0.lock() {
+            films.insert(key.to_owned(), film.clone());
+        }
+        Ok(())
+    }
+}
+
+/// The film of `scene` from the references `films`, if it was rendered before,
+/// else rendered by `render` (which tells `progress` its work as it goes) and kept
+/// there. `text` is the scene file's text, edits included: with the size, the
+/// samples and the seed it names the reference ([`reference_key`]), so that any
+/// change renders anew. A film found in `films` tells `progress` all its work at
+/// once. The second value says whether the film could be kept: a folder that cannot
+/// be written only costs time on the next run, so the caller decides what to say.
 pub fn cached_render(
-    dir: &Path,
+    films: &dyn Films,
     text: &str,
     scene: &Scene,
     progress: &(dyn Fn(u64) + Sync),
     render: impl FnOnce(&(dyn Fn(u64) + Sync)) -> Film,
 ) -> (Film, std::io::Result<()>) {
-    let path = reference_file(dir, text, scene);
-    if let Some(film) = load_reference(&path) {
+    let key = reference_key(text, scene);
+    if let Some(film) = films.load(&key) {
         progress(u64::from(scene.camera.height) * u64::from(scene.settings.samples));
         return (film, Ok(()));
     }
     let film = render(progress);
-    let saved = save_reference(&path, &film);
+    let saved = films.save(&key, &film);
     (film, saved)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_film_kept_in_memory_is_found_under_its_key_alone() {
+        let films = InMemory::default();
+        let film = Film {
+            width: 1,
+            height: 1,
+            pixels: vec![Colour::new(0.25, 1e30, 0.0)],
+        };
+        assert!(films.is_empty() && films.folder().is_none());
+        films.save("a", &film).unwrap();
+        assert_eq!(films.load("a"), Some(film));
+        assert_eq!(films.load("b"), None);
+        assert_eq!(films.len(), 1);
+    }
 
     #[test]
     fn a_saved_reference_loads_bit_for_bit() {
@@ -140,17 +223,25 @@ mod tests {
         let progress = |n| {
             told.fetch_add(n, std::sync::atomic::Ordering::Relaxed);
         };
-        let (first, saved) = cached_render(dir.path(), "a", &scene, &progress, |_| film.clone());
+        let (first, saved) = cached_render(&Folder(dir.path()), "a", &scene, &progress, |_| {
+            film.clone()
+        });
         assert!(saved.is_ok() && first == film);
         assert_eq!(told.load(std::sync::atomic::Ordering::Relaxed), 0);
-        let (again, _) = cached_render(dir.path(), "a", &scene, &progress, |_| unreachable!());
+        let (again, _) = cached_render(
+            &Folder(dir.path()),
+            "a",
+            &scene,
+            &progress,
+            |_| unreachable!(),
+        );
         assert_eq!(again, film);
         assert_eq!(
             told.load(std::sync::atomic::Ordering::Relaxed),
             3,
             "1 row x 3 samples"
         );
-        let (other, _) = cached_render(dir.path(), "b", &scene, &progress, |_| Film {
+        let (other, _) = cached_render(&Folder(dir.path()), "b", &scene, &progress, |_| Film {
             pixels: vec![Colour::ONE; 2],
             ..film.clone()
         });
@@ -158,7 +249,7 @@ mod tests {
         // Under a file, the folder cannot be made: the film comes back with the error.
         let file = dir.path().join("file");
         std::fs::write(&file, "").unwrap();
-        let (kept, saved) = cached_render(&file, "a", &scene, &progress, |_| film.clone());
+        let (kept, saved) = cached_render(&Folder(&file), "a", &scene, &progress, |_| film.clone());
         assert!(kept == film && saved.is_err());
     }
 

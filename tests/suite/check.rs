@@ -16,6 +16,7 @@ use raycourse::integrator::Tracer;
 use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::maths::{Colour, PI, Real, pixel_rng};
+use raycourse::render::cache::Folder;
 use raycourse::render::film::display;
 use raycourse::{Overrides, Scene, Stage, encode_png, stages};
 
@@ -79,7 +80,7 @@ fn checked(stage: &Stage, image: &RgbImage, cache: &Path) -> Report {
     let source = Source {
         stage,
         size: image.dimensions(),
-        cache,
+        cache: &Folder(cache),
         files: &raycourse::Disk,
         progress: &|_| {},
         renderer: RENDERER,
@@ -141,7 +142,7 @@ fn every_deterministic_stage_passes_as_a_jpeg_of_quality_85() {
         let source = Source {
             stage,
             size: read.dimensions(),
-            cache: &cache,
+            cache: &Folder(&cache),
             files: &raycourse::Disk,
             progress: &|_| {},
             renderer: RENDERER,

@@ -5,6 +5,7 @@
 use raycourse::check::expected::Source;
 use raycourse::check::language::Language;
 use raycourse::check::report::{Verdict, check};
+use raycourse::render::cache::InMemory;
 use wasm_bindgen::prelude::*;
 
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -43,7 +44,7 @@ extern "C" {
     /// imported function, not a closure over a JavaScript value, so that the render
     /// may call it from any of its (here, one) threads.
     #[wasm_bindgen(js_name = raycourseProgress)]
-    fn report_progress(rows: f64);
+    pub fn report_progress(rows: f64);
 }
 
 /// Checks the image in `file` (a PNG, JPEG or PPM file's bytes) against the stage called
@@ -82,7 +83,7 @@ pub fn checked(
     let source = Source {
         stage,
         size: image.dimensions(),
-        cache: std::path::Path::new(""),
+        cache: &InMemory::default(),
         files: assets::stage_files(),
         progress: &count,
         renderer: &raycourse::engines::Fast,

@@ -2,7 +2,7 @@
 //! book's pages by wasm-bindgen. The renderer is the crate's own, not a copy: a demo
 //! renders a stage's scene file, edited by the page's controls, with the course's
 //! functions ([`Demo`]); the check page runs `raycourse check` on a dropped image
-//! ([`check_image`]). What a page cannot do stays out: files (the stages' meshes and
+//! ([`check_image`]) and grades a whole class ([`Class`]). What a page cannot do stays out: files (the stages' meshes and
 //! textures are compiled in, [`assets`]), clocks (the page times the work with its
 //! own) and threads (rayon runs on the page's one thread; a page that wants more
 //! starts one worker per core, each rendering its own rows).
@@ -14,6 +14,7 @@
 //! | [`demo`] | a stage rendered row by row, and its cost image |
 //! | [`functions`] | the course functions a scene's render runs |
 //! | [`checking`] | `check` on a student's image |
+//! | [`grading`] | `check --all` on a class's folder, or a student's |
 //! | `command_line` | for the tests: a stage as the command line renders it |
 
 pub mod assets;
@@ -23,9 +24,11 @@ mod command_line;
 pub mod demo;
 pub mod edits;
 pub mod functions;
+pub mod grading;
 
 pub use checking::check_image;
 pub use demo::Demo;
+pub use grading::Class;
 
 use wasm_bindgen::prelude::*;
 
