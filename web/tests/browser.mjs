@@ -9,9 +9,13 @@
 // read back from its canvas must pass `raycourse check` for that stage, and moving a
 // control must change them. The check page must pass a correct image (a PNG, and a
 // PPM written by hand), fail a gamma-less one with the gamma hint, and refuse a file
-// that is not an image. The
-// French book's demo must speak French, and each page link to the other language's.
-// A page that throws, logs an error or loads anything from the network fails its
+// that is not an image, and grade a class as `check --all` does, to the sheet's last
+// byte. The French book's demo must speak French, and each page link to the other
+// language's. Every page of both editions, its demo rendered, must break none of
+// axe-core's WCAG 2.1 A and AA rules; a demo read through Chromium's accessibility
+// tree names its every control and its image, session 7's camera turns from the
+// keyboard, and a reader who asks for less motion sees each image drawn once. A
+// page that throws, logs an error or loads anything from the network fails its
 // test.
 import { execFileSync, spawnSync } from "node:child_process";
 import fs from "node:fs";
@@ -40,9 +44,11 @@ function serve() {
   return new Promise((resolve) => server.listen(0, "127.0.0.1", () => resolve([server, `http://127.0.0.1:${server.address().port}/`])));
 }
 
-/** A new page that records what it throws and logs as an error. */
-async function open(browser, url) {
+/** A new page that records what it throws and logs as an error; `before(page)`
+ * runs before it loads. */
+async function open(browser, url, before) {
   const page = await browser.newPage();
+  if (before) await before(page);
   page.errors = [];
   page.on("pageerror", (error) => page.errors.push(error.message));
   page.on("console", (message) => message.type() === "error" && page.errors.push(message.text()));
@@ -90,7 +96,12 @@ function save(png, name) {
 
 /** `raycourse ARGS...`: its exit code and output. */
 function command(...args) {
-  const run = spawnSync(raycourse, args, { encoding: "utf8" });
+  return commandIn(root, ...args);
+}
+
+/** `raycourse ARGS...` run in the folder `cwd`: its exit code and output. */
+function commandIn(cwd, ...args) {
+  const run = spawnSync(raycourse, args, { encoding: "utf8", cwd });
   return { code: run.status, output: `${run.stdout}${run.stderr}` };
 }
 
@@ -289,6 +300,38 @@ async function checks(browser, base) {
     assert(answer.state === "differs", `the page says: ${answer.report}`);
     assert(/hint \([^)]*gamma/.test(answer.report), `no gamma hint in: ${answer.report}`);
   });
+  await test("the check page grades a class as check --all does: its lines, and its sheet to the byte", async () => {
+    const gamma = path.join(scratch, "gamma.png");
+    execFileSync(raycourse, ["s2", "gamma", "--width", "64", "--height", "64", "--out", gamma, "--quiet"]);
+    const files = { "alice/shading.png": good, "alice/gamma.png": gamma, "bob/shading.png": good,
+      "bob/gamma.png": path.join(scratch, "no-gamma.png"), "carol/shading.png": path.join(scratch, "notes.png") };
+    const klass = path.join(scratch, "class");
+    fs.writeFileSync(path.join(scratch, "notes.png"), "not a picture");
+    for (const [name, from] of Object.entries(files)) {
+      fs.mkdirSync(path.dirname(path.join(klass, name)), { recursive: true });
+      fs.copyFileSync(from, path.join(klass, name));
+    }
+    const said = commandIn(scratch, "check", "--all", "class", "--csv", "sheet.csv", "--quiet", "--cache", path.join(scratch, "cache"));
+    assert(said.code === 1, `check --all: exit ${said.code}\n${said.output}`);
+    const page = await open(browser, `${base}check.html`);
+    await page.waitForSelector('.live-check[data-state="ready"]', { timeout: 60000 });
+    const folder = await page.$(".live-check input.live-class-folder");
+    await folder.uploadFile(klass);
+    await page.click(".live-class button");
+    await page.waitForSelector('.live-check[data-state^="graded"], .live-check[data-state="error"]', { timeout: 300000 });
+    const graded = await page.evaluate(() => {
+      const root = document.querySelector(".live-check");
+      return { state: root.dataset.state, lines: root.querySelector(".live-class-lines").textContent,
+        csv: root.querySelector("a.live-sheet").dataset.csv, report: root.querySelector(".live-report").textContent };
+    });
+    assert(graded.state === "graded-differing", `the page says ${graded.state}: ${graded.report}`);
+    const lines = said.output.split("\n").filter((l) => /^(alice|bob|carol) /.test(l)).join("\n");
+    assert(graded.lines.trim() === lines, `the page printed\n${graded.lines}\nthe command\n${lines}`);
+    const sheet = fs.readFileSync(path.join(scratch, "sheet.csv"), "utf8");
+    assert(graded.csv === sheet, `the page's sheet\n${graded.csv}\nthe command's\n${sheet}`);
+    assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
+    await page.close();
+  });
   await test("the check page refuses a file that is not an image", async () => {
     const text = path.join(scratch, "notes.png");
     fs.writeFileSync(text, "not a picture");
@@ -340,6 +383,95 @@ async function speed(browser, base) {
   }
 }
 
+/** Every page of both editions, but the print and table-of-contents pages. */
+function chapters() {
+  const pages = (folder) => fs.readdirSync(path.join(book, folder))
+    .filter((f) => f.endsWith(".html") && !["print.html", "toc.html"].includes(f)).map((f) => `${folder}${f}`);
+  return [...pages(""), ...pages("fr/")];
+}
+
+/** axe-core's WCAG 2.1 A and AA rules on `page`, once its demos have rendered and
+ * its check page is ready: each rule broken, with how many elements break it. */
+async function violations(page) {
+  await page.waitForFunction(() => [...document.querySelectorAll(".live-demo")].every((d) => /done|error/.test(d.dataset.state))
+    && [...document.querySelectorAll(".live-check")].every((c) => c.dataset.state === "ready"), { timeout: 300000 });
+  await page.addScriptTag({ path: path.join(root, "web/node_modules/axe-core/axe.min.js") });
+  return page.evaluate(async () => {
+    const tags = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"];
+    const found = await window.axe.run(document, { runOnly: { type: "tag", values: tags } });
+    return found.violations.map((v) => `${v.id} (${v.impact}, ${v.nodes.length}): ${v.help}: ${v.nodes[0].target.join(" ")}`);
+  });
+}
+
+/** The nodes of the page's accessibility tree, as a screen reader reads them. */
+async function readAloud(page) {
+  const nodes = [];
+  const walk = (node) => { nodes.push(node); (node.children || []).forEach(walk); };
+  walk(await page.accessibility.snapshot());
+  return nodes;
+}
+
+/** What a reader of every page needs: WCAG 2.1 AA by axe's rules, names for every
+ * control and image, the keyboard, and less motion when asked for. */
+async function access(browser, base) {
+  await test("every page of both editions, its demo rendered, breaks none of axe-core's WCAG 2.1 A and AA rules", async () => {
+    const found = [];
+    for (const chapter of chapters()) {
+      const page = await open(browser, `${base}${chapter}?live-size=16`);
+      found.push(...(await violations(page)).map((v) => `${chapter}: ${v}`));
+      assert(page.errors.length === 0, `${chapter} reported errors: ${page.errors.join("; ")}`);
+      await page.close();
+    }
+    assert(found.length === 0, `${found.length} rules broken:\n${found.join("\n")}`);
+  });
+  await test("session 7's demo read as a screen reader reads it, and its camera turned from the keyboard", async () => {
+    const page = await open(browser, `${base}session7.html?live-size=24`);
+    const before = await rendered(page);
+    const nodes = await readAloud(page);
+    const named = (role, pattern) => nodes.find((n) => role.test(n.role) && pattern.test(n.name || ""));
+    for (const [role, name] of [[/combobox/, /^stage/], [/slider/, /^samples per pixel/], [/slider/, /^plunge/],
+      [/checkbox/, /^texture/], [/^(img|image)$/, /^session 7, stage .*samples per pixel\. Arrow keys/], [/status/, /./]]) {
+      assert(named(role, name), `no ${role} named ${name} among: ${nodes.map((n) => `${n.role} "${n.name}"`).join(", ")}`);
+    }
+    const start = await page.evaluate(() => Number(document.querySelector('[data-control="plunge"]').value));
+    await page.focus(".live-demo canvas.live-image");
+    await page.keyboard.press("ArrowLeft");
+    const turned = await rendered(page);
+    assert(turned.png !== before.png, `the left arrow changed nothing: ${turned.status}`);
+    await page.keyboard.press("ArrowDown");
+    const lowered = await rendered(page);
+    const seen = await page.evaluate(() => {
+      const canvas = document.querySelector(".live-demo canvas.live-image");
+      return { label: canvas.getAttribute("aria-label"), outline: getComputedStyle(canvas).outlineStyle,
+        plunge: document.querySelector('[data-control="plunge"]').value };
+    });
+    assert(lowered.png !== turned.png && /turned by 10 degrees/.test(seen.label), `the image says: ${seen.label}`);
+    assert(seen.outline === "solid", `the focused image shows no outline: ${seen.outline}`);
+    assert(Number(seen.plunge) === Math.min(80, start + 5), `the down arrow took the plunge from ${start} to ${seen.plunge}`);
+    assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
+    await page.close();
+  });
+  await test("a reader who asks for less motion sees each image drawn once, when done", async () => {
+    const counting = async (page) => {
+      await page.emulateMediaFeatures([{ name: "prefers-reduced-motion", value: "reduce" }]);
+      await page.evaluateOnNewDocument(() => {
+        window.painted = [];
+        const put = CanvasRenderingContext2D.prototype.putImageData;
+        CanvasRenderingContext2D.prototype.putImageData = function (...args) {
+          window.painted.push(document.querySelector(".live-status")?.textContent);
+          return put.apply(this, args);
+        };
+      });
+    };
+    const page = await open(browser, `${base}session3.html?live-size=24`, counting);
+    const shown = await rendered(page);
+    const painted = await page.evaluate(() => window.painted);
+    assert(shown.state === "done" && painted.length === 3, `${painted.length} bands painted: ${painted.join(" | ")}`);
+    assert(painted.every((status) => !/refining/.test(status)), `painted while refining: ${painted.join(" | ")}`);
+    await page.close();
+  });
+}
+
 const [server, base] = await serve();
 const browser = await puppeteer.launch({
   executablePath: process.env.CHROMIUM || "/usr/bin/chromium",
@@ -354,6 +486,7 @@ try {
     await controls(browser, base);
     await french(browser, base);
     await checks(browser, base);
+    await access(browser, base);
   }
 } finally {
   await browser.close();

@@ -2,7 +2,10 @@
 // A student picks the stage and their image (PNG, JPEG or PPM, any size); a worker renders
 // the stage's reference at that size with the crate itself and says what the command
 // says: the verdict, the brightness ratio, where the image differs and the hint, with
-// the picture of the differences. The image never leaves the page.
+// the picture of the differences. A teacher picks a class's folder (one folder per
+// student, each image named after its stage) or one student's images, and gets what
+// `raycourse check --all` prints and its grading sheet, to download. Nothing leaves
+// the page.
 (function () {
   "use strict";
   const { startWorkers, startEach, element, say, french } = window.raycourseLive;
@@ -25,6 +28,8 @@
         this.status.textContent = `${say("rendering the reference")}${french ? "\u00a0" : ""}: ${message.rows} ${say("rows")}`;
       }
       if (message.kind === "checked") this.show(message);
+      if (message.kind === "graded") this.graded(message);
+      if (message.kind === "sheet") this.sheet(message);
       if (message.kind === "error") this.fail(message.message);
     }
 
@@ -35,13 +40,62 @@
       this.button = element("button", { textContent: say("check"), onclick: () => this.check() });
       this.progress = element("progress", { hidden: true });
       this.status = element("p", { className: "live-status" });
+      this.status.setAttribute("role", "status");
       this.report = element("pre", { className: "live-report" });
       this.difference = element("img", { className: "live-difference", alt: say("the differences: differing pixels or blocks in red"), hidden: true });
       this.root.textContent = "";
       this.root.append(
         element("p", {}, element("label", {}, `${say("stage")} `, this.stage), " ", element("label", {}, `${say("your image")} `, this.file), " ", this.button),
-        this.progress, this.status, this.report, this.difference);
+        this.progress, this.status, this.report, this.difference, this.classForm());
       this.root.dataset.state = "ready";
+    }
+
+    /** The form that grades a class's folder, or one student's images. */
+    classForm() {
+      const files = { type: "file", multiple: true, accept: "image/png,image/jpeg,.ppm" };
+      this.folder = element("input", { ...files, webkitdirectory: true, className: "live-class-folder" });
+      this.images = element("input", { ...files, className: "live-class-images" });
+      this.gradeButton = element("button", { textContent: say("grade"), onclick: () => this.grade() });
+      this.lines = element("pre", { className: "live-report live-class-lines" });
+      this.download = element("a", { className: "live-sheet", download: "grades.csv", hidden: true,
+        textContent: say("the grading sheet, grades.csv") });
+      return element("fieldset", { className: "live-class" },
+        element("legend", { textContent: say("A class, as check --all grades it") }),
+        element("p", {}, element("label", {}, `${say("the class's folder (a folder per student)")} `, this.folder)),
+        element("p", {}, element("label", {}, `${say("or one student's images, named after their stages")} `, this.images)),
+        element("p", {}, this.gradeButton), this.lines, this.download);
+    }
+
+    /** Grades the folder or the images chosen, as `check --all` does. */
+    async grade() {
+      const chosen = [...this.folder.files, ...this.images.files];
+      if (!chosen.length) return this.fail(say("choose a class's folder or a student's images first"));
+      this.job += 1;
+      this.root.dataset.state = "grading";
+      this.lines.textContent = "";
+      this.download.hidden = true;
+      this.status.textContent = say("grading…");
+      const files = await Promise.all(chosen.map(async (file) =>
+        ({ path: file.webkitRelativePath || file.name, bytes: await file.arrayBuffer() })));
+      const language = french ? "fr" : "en";
+      this.worker.postMessage({ kind: "grade", job: this.job, files, language }, files.map((f) => f.bytes));
+    }
+
+    /** One folder graded: its lines, as the command prints them. */
+    graded(message) {
+      this.progress.hidden = true;
+      this.lines.textContent += `${message.lines}\n`;
+      this.status.textContent = `${say("graded")} ${message.done} / ${message.count}`;
+    }
+
+    /** Every folder graded: the sheet, offered for download. */
+    sheet(message) {
+      if (this.download.href) URL.revokeObjectURL(this.download.href);
+      this.download.href = URL.createObjectURL(new Blob([message.csv], { type: "text/csv" }));
+      this.download.dataset.csv = message.csv;
+      this.download.hidden = false;
+      this.status.textContent = say(message.passes ? "every image matches" : "some images differ");
+      this.root.dataset.state = message.passes ? "graded-matching" : "graded-differing";
     }
 
     async check() {

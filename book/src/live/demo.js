@@ -90,11 +90,19 @@
     ] },
     7: { size: 256, orbit: true, controls: [
       samples,
-      range("plunge", "plunge (degrees); drag the image to orbit", [-10, 80, 1], (f) => f.camera.plunge || 0, () => ({})),
+      range("plunge", "plunge (degrees); drag the image or use the arrow keys to orbit", [-10, 80, 1], (f) => f.camera.plunge || 0, () => ({})),
       toggle("texture", "texture", (f) => !!f.meshes[0].textured, (on) => ({ "meshes.0.textured": on })),
       fast,
     ] },
   };
+
+  /** Whether the reader asked for less motion: each render is then drawn once, when
+   * done, rather than a first pass and then band by band. */
+  const still = window.matchMedia("(prefers-reduced-motion: reduce)").matches;
+
+  /** Arrow keys on session 7's image: how far each turns the camera, in degrees of
+   * azimuth and of plunge, as dragging by 20 pixels and by 10 does. */
+  const KEYS = { ArrowLeft: [10, 0], ArrowRight: [-10, 0], ArrowUp: [0, -5], ArrowDown: [0, 5] };
 
   /** The page's `?live-size=N`, if any. */
   const sizeOverride = Number(new URLSearchParams(location.search).get("live-size")) || 0;
@@ -134,20 +142,24 @@
       this.select = element("select", { className: "live-stage", onchange: () => this.pickStage() },
         ...this.stages.map((s) => element("option", { value: s.name, textContent: french ? s.name : `${s.name}: ${s.title}` })));
       this.canvas = element("canvas", { className: "live-image", width: this.size, height: this.size });
+      this.canvas.setAttribute("role", "img");
       const images = element("div", { className: "live-images" }, this.canvas);
       if (this.setup.cost) {
         this.costCanvas = element("canvas", { className: "live-cost", width: this.size, height: this.size });
         this.costCaption = element("figcaption", { textContent: say("cost: tests per camera ray") });
+        this.costCanvas.setAttribute("role", "img");
         images.append(element("figure", {}, this.costCanvas, this.costCaption));
       }
       if (this.setup.orbit) this.orbit();
       this.controls = element("div", { className: "live-controls" });
       this.statusLine = element("p", { className: "live-status" });
+      this.statusLine.setAttribute("role", "status");
       this.timesTable = element("table", { className: "live-times" });
       this.functions = element("code", { className: "live-functions" });
       this.functionsTitle = element("summary", { textContent: say("the course functions this image ran") });
       const ran = element("details", {}, this.functionsTitle, this.functions);
-      this.root.append(element("p", {}, `${say("stage")} `, this.select), images, this.controls, this.statusLine, this.timesTable, ran);
+      this.root.append(element("p", {}, element("label", {}, `${say("stage")} `, this.select)), images, this.controls,
+        this.statusLine, this.timesTable, ran);
       this.pickStage();
     }
 
@@ -227,7 +239,9 @@
     render() {
       this.job += 1;
       const samples = this.values.samples || this.stage.file.render.samples || 1;
-      const passes = samples > 1 ? [1, samples] : [1];
+      const passes = samples > 1 && !still ? [1, samples] : [samples];
+      this.held = [];
+      this.describe(0);
       this.pending = { passes, bands: Math.ceil(this.size / BAND), done: 0, rays: 0, started: performance.now() };
       this.edited = this.edits();
       this.status(`${say("rendering")} ${this.stage.name}…`);
@@ -243,7 +257,25 @@
     paint(message) {
       const rows = message.rgba.length / (4 * this.size);
       const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, rows);
-      this.canvas.getContext("2d").putImageData(pixels, 0, message.first);
+      if (still) this.held.push([pixels, message.first]);
+      else this.canvas.getContext("2d").putImageData(pixels, 0, message.first);
+    }
+
+    /** The image's text alternative, which follows it: the stage, what the controls
+     * set, and the samples per pixel drawn so far. */
+    describe(samples) {
+      const set = this.inputs.filter((label) => !label.hidden).map((label) => {
+        const input = label.querySelector("[data-control]");
+        const value = input.type === "checkbox" ? say(input.checked ? "on" : "off")
+          : input.tagName === "SELECT" ? input.selectedOptions[0].textContent : input.value;
+        return `${say(label.liveControl.label)}${french ? "\u00a0" : ""}: ${value}`;
+      });
+      if (this.setup.orbit) set.push(`${say("turned by")} ${Math.round(this.azimuth)} ${say("degrees")}`);
+      const done = samples ? `${samples} ${say(samples > 1 ? "samples per pixel" : "sample per pixel")}`
+        : say("rendering…");
+      const title = french ? this.stage.name : `${this.stage.name}, ${this.stage.title}`;
+      this.canvas.setAttribute("aria-label", `${say("session")} ${this.session}, ${say("stage")} ${title}; ${set.join("; ")}; ${done}`
+        + (this.setup.orbit ? `. ${say("Arrow keys turn the camera, as dragging does.")}` : ""));
     }
 
     /** One worker finished a pass; when all have, the pass's time is shown. */
@@ -260,6 +292,8 @@
       this.functionsTitle.textContent = say(this.values.fast ? "the fast engine's function that made this image (beyond the course)"
         : "the course functions this image ran");
       const last = message.pass === p.passes.length - 1;
+      if (still && last) for (const [pixels, first] of this.held) this.canvas.getContext("2d").putImageData(pixels, 0, first);
+      if (last || !still) this.describe(samples);
       const per = say(samples > 1 ? "samples per pixel" : "sample per pixel");
       const text = `${this.stage.name}, ${this.size} × ${this.size}${french ? "\u00a0" : ""}: ${samples} ${per} ${say("in")} ${duration(ms)}`;
       const workers = `${this.workers.length} ${say("workers")}`;
@@ -291,6 +325,7 @@
       const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, message.height);
       this.costCanvas.getContext("2d").putImageData(pixels, 0, 0);
       this.costCaption.textContent = `${say("cost")}${french ? "\u00a0" : ""}: ${number(message.mean, 1)} ${say("tests per camera ray on average")}`;
+      this.costCanvas.setAttribute("aria-label", `${say("the cost image")}, ${this.costCaption.textContent}`);
       this.times[this.timesKey].cost = message.mean;
       this.showTimes();
     }
@@ -301,26 +336,38 @@
         element("td", { textContent: name(t) }),
         element("td", { textContent: `${duration(t.ms)} (${t.samples} ${say("samples")}, ${t.size} × ${t.size})` }),
         element("td", { textContent: t.cost === undefined ? "" : `${number(t.cost, 1)} ${say("tests per camera ray")}` })));
-      this.timesTable.replaceChildren(element("tr", {}, element("th", { textContent: say("search") }),
-        element("th", { textContent: say("time") }), element("th", { textContent: say("cost") })), ...rows);
+      const head = (text) => element("th", { scope: "col", textContent: say(text) });
+      this.timesTable.replaceChildren(element("tr", {}, head("search"), head("time"), head("cost")), ...rows);
     }
 
-    /** Session 7: dragging the image turns the camera around the cow and raises it. */
+    /** Session 7: dragging the image (by mouse, pen or finger) turns the camera
+     * around the cow and raises it; so do the arrow keys, the image having the focus. */
     orbit() {
       let from = null;
-      this.canvas.style.cursor = "grab";
+      this.canvas.classList.add("live-orbit");
+      this.canvas.tabIndex = 0;
       this.canvas.addEventListener("pointerdown", (e) => { from = [e.clientX, e.clientY]; this.canvas.setPointerCapture(e.pointerId); });
-      this.canvas.addEventListener("pointerup", () => { from = null; });
+      for (const end of ["pointerup", "pointercancel"]) this.canvas.addEventListener(end, () => { from = null; });
       this.canvas.addEventListener("pointermove", (e) => {
         if (!from) return;
-        this.azimuth -= (e.clientX - from[0]) * 0.5;
-        const plunge = Math.max(-10, Math.min(80, this.values.plunge + (e.clientY - from[1]) * 0.5));
+        this.turn(-(e.clientX - from[0]) * 0.5, (e.clientY - from[1]) * 0.5);
         from = [e.clientX, e.clientY];
-        this.values.plunge = Math.round(plunge);
-        const input = this.controls.querySelector('[data-control="plunge"]');
-        if (input) { input.value = this.values.plunge; input.shown.textContent = String(this.values.plunge); }
-        this.render();
       });
+      this.canvas.addEventListener("keydown", (e) => {
+        if (!KEYS[e.key]) return;
+        e.preventDefault();
+        this.turn(...KEYS[e.key]);
+      });
+    }
+
+    /** Turns the camera by `azimuth` degrees around the cow and raises it by `plunge`
+     * (kept within the plunge control's range), and renders again. */
+    turn(azimuth, plunge) {
+      this.azimuth += azimuth;
+      this.values.plunge = Math.round(Math.max(-10, Math.min(80, this.values.plunge + plunge)));
+      const input = this.controls.querySelector('[data-control="plunge"]');
+      if (input) { input.value = this.values.plunge; input.shown.textContent = String(this.values.plunge); }
+      this.render();
     }
   }
 

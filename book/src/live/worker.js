@@ -3,7 +3,7 @@
 // starts one worker per core; each renders the bands of rows it is given and posts
 // each band's pixels as soon as it is done. A newer job makes the worker drop the
 // rest of the older one between two bands.
-import init, { Demo, check_image, stages } from "./pkg/raycourse_web.js";
+import init, { Class, Demo, check_image, stages } from "./pkg/raycourse_web.js";
 
 const ready = init();
 let current = -1;
@@ -23,6 +23,7 @@ self.onmessage = async (event) => {
     if (message.kind === "render") await render(message);
     if (message.kind === "cost") cost(message);
     if (message.kind === "check") check(message);
+    if (message.kind === "grade") grade(message);
   } catch (error) {
     self.postMessage({ kind: "error", job: message.job, message: text(error) });
   }
@@ -71,4 +72,24 @@ function check(job) {
   const png = checked.difference_png();
   self.postMessage({ kind: "checked", job: job.job, matches: checked.matches(), text: checked.text(), png }, [png.buffer]);
   checked.free();
+}
+
+/** `raycourse check --all` on the files of a class's folder (or of one student's),
+ * folder by folder, each reference rendered once for the whole class. */
+function grade(job) {
+  self.raycourseProgress = (rows) => self.postMessage({ kind: "progress", job: job.job, rows });
+  const graded = new Class(job.language);
+  try {
+    for (const file of job.files) graded.add(file.path, new Uint8Array(file.bytes));
+    const count = graded.folders();
+    if (count === 0) throw new Error(job.language === "fr"
+      ? "aucune image d'une étape ici, ni dans le dossier d'un étudiant\u00a0: nommez chaque image d'après son étape, comme glass.png"
+      : "no image of a stage here, nor in a student's folder: name each image after its stage, such as glass.png");
+    for (let done = 1, lines; (lines = graded.gradeNext()) !== undefined; done++) {
+      self.postMessage({ kind: "graded", job: job.job, lines, done, count });
+    }
+    self.postMessage({ kind: "sheet", job: job.job, csv: graded.sheet(), passes: graded.passes() });
+  } finally {
+    graded.free();
+  }
 }
