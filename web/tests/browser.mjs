@@ -14,7 +14,8 @@
 // language's. Every page of both editions, its demo rendered, must break none of
 // axe-core's WCAG 2.1 A and AA rules; a demo read through Chromium's accessibility
 // tree names its every control and its image, session 7's camera turns from the
-// keyboard, and a reader who asks for less motion sees each image drawn once. A
+// keyboard and under a finger on a phone, and a reader who asks for less motion sees
+// each image drawn once. A
 // page that throws, logs an error or loads anything from the network fails its
 // test.
 import { execFileSync, spawnSync } from "node:child_process";
@@ -383,10 +384,11 @@ async function speed(browser, base) {
   }
 }
 
-/** Every page of both editions, but the print and table-of-contents pages. */
+/** Every chapter of both editions: the pages but the print, table-of-contents and
+ * not-found ones. */
 function chapters() {
   const pages = (folder) => fs.readdirSync(path.join(book, folder))
-    .filter((f) => f.endsWith(".html") && !["print.html", "toc.html"].includes(f)).map((f) => `${folder}${f}`);
+    .filter((f) => f.endsWith(".html") && !["print.html", "toc.html", "404.html"].includes(f)).map((f) => `${folder}${f}`);
   return [...pages(""), ...pages("fr/")];
 }
 
@@ -430,9 +432,12 @@ async function access(browser, base) {
     const nodes = await readAloud(page);
     const named = (role, pattern) => nodes.find((n) => role.test(n.role) && pattern.test(n.name || ""));
     for (const [role, name] of [[/combobox/, /^stage/], [/slider/, /^samples per pixel/], [/slider/, /^plunge/],
-      [/checkbox/, /^texture/], [/^(img|image)$/, /^session 7, stage .*samples per pixel\. Arrow keys/], [/status/, /./]]) {
+      [/checkbox/, /^texture/], [/^(img|image)$/, /^session 7, stage .*samples per pixel\. Arrow keys/],
+      [/StaticText/, /^textures, 24 × 24: \d+ samples per pixel in/]]) {
       assert(named(role, name), `no ${role} named ${name} among: ${nodes.map((n) => `${n.role} "${n.name}"`).join(", ")}`);
     }
+    const status = nodes.findIndex((n) => n.role === "status");
+    assert(status >= 0 && /samples per pixel in/.test(nodes[status + 1].name), "the status line is no live region");
     const start = await page.evaluate(() => Number(document.querySelector('[data-control="plunge"]').value));
     await page.focus(".live-demo canvas.live-image");
     await page.keyboard.press("ArrowLeft");
@@ -448,6 +453,25 @@ async function access(browser, base) {
     assert(lowered.png !== turned.png && /turned by 10 degrees/.test(seen.label), `the image says: ${seen.label}`);
     assert(seen.outline === "solid", `the focused image shows no outline: ${seen.outline}`);
     assert(Number(seen.plunge) === Math.min(80, start + 5), `the down arrow took the plunge from ${start} to ${seen.plunge}`);
+    assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
+    await page.close();
+  });
+  await test("on a phone, session 7's image turns under a finger, and the page does not scroll", async () => {
+    const phone = (page) => page.setViewport({ width: 360, height: 740, isMobile: true, hasTouch: true });
+    const page = await open(browser, `${base}session7.html?live-size=24`, phone);
+    const before = await rendered(page);
+    const canvas = await page.$(".live-demo canvas.live-image");
+    await canvas.scrollIntoView();
+    const box = await canvas.boundingBox();
+    const [x, y] = [box.x + box.width / 2, box.y + box.height / 2];
+    const scrolled = await page.evaluate(() => window.scrollY);
+    await page.touchscreen.touchStart(x, y);
+    await page.touchscreen.touchMove(x + 40, y + 30);
+    await page.touchscreen.touchEnd();
+    const after = await rendered(page);
+    assert(after.state === "done" && after.png !== before.png, `the finger changed nothing: ${after.status}`);
+    const still = await page.evaluate(() => window.scrollY);
+    assert(still === scrolled, `the page scrolled from ${scrolled} to ${still} under the finger`);
     assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
     await page.close();
   });

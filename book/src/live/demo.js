@@ -183,7 +183,9 @@
 
     /** The input of `control`, starting at `value`. */
     input(control, value) {
+      // The value beside a slider, for the eye: a screen reader reads the slider's own.
       const shown = element("output", { textContent: String(value) });
+      shown.setAttribute("aria-hidden", "true");
       let input;
       if (control.kind === "select") {
         input = element("select", {}, ...control.options.map(([v, label]) => element("option", { value: v, textContent: say(label) })));
@@ -354,8 +356,11 @@
         from = [e.clientX, e.clientY];
       });
       this.canvas.addEventListener("keydown", (e) => {
-        if (!KEYS[e.key]) return;
+        if (!KEYS[e.key] || e.altKey || e.ctrlKey || e.metaKey) return;
+        // The arrows turn the camera here, rather than scroll the page or (mdBook's
+        // left and right) go to another chapter.
         e.preventDefault();
+        e.stopPropagation();
         this.turn(...KEYS[e.key]);
       });
     }
