@@ -24,13 +24,19 @@ const MDBOOK: [(&str, &str, &str); 3] = [
 /// `book/build/LANG/`.
 const LANGUAGES: [(&str, &str); 1] = [("fr", "raycourse : le lancer de rayons en sept séances")];
 
+/// Installs mdBook, its formula preprocessor and its translation tools where they are
+/// missing, at the versions the book is built with ([`MDBOOK`]).
+pub fn install_tools() -> Result<(), String> {
+    MDBOOK
+        .iter()
+        .try_for_each(|(tool, package, version)| install_if_missing(tool, package, version))
+}
+
 /// Builds the live book; with `open`, serves it and opens it.
 pub fn build(root: &Path, open: bool) -> Result<(), String> {
     let wasm = compile(root)?;
     bindings(root, &wasm)?;
-    for (tool, package, version) in MDBOOK {
-        install_if_missing(tool, package, version)?;
-    }
+    install_tools()?;
     let html = root.join("book/build");
     run(Command::new("mdbook").arg("build").arg(root.join("book")))?;
     for (language, title) in LANGUAGES {

@@ -11,7 +11,10 @@
 //! - `cargo xtask mdbook-formulas hide|show`: the book's preprocessors that keep its
 //!   formulas whole through the translation (mdBook runs them);
 //! - `cargo xtask book [--open]`: the live book, the crate compiled to WebAssembly
-//!   for its demos and check page, in `book/build/` (`--open`: served and opened).
+//!   for its demos and check page, in `book/build/` (`--open`: served and opened);
+//! - `cargo xtask book-tools`: mdBook, its formula preprocessor and its translation
+//!   tools, installed where missing at the versions the book is built with (pinned
+//!   there alone: CI and the translation check call this).
 
 mod book;
 mod cfg;
@@ -56,7 +59,7 @@ fn run(args: &[String]) -> Result<(), String> {
     let usage = "usage: cargo xtask view sN DIR | cargo xtask views DIR | \
                  cargo xtask exercise sN DIR [--only sN.K] [--switch] | cargo xtask exercises | \
                  cargo xtask mdbook-listings | cargo xtask mdbook-formulas hide|show | \
-                 cargo xtask book [--open]";
+                 cargo xtask book [--open] | cargo xtask book-tools";
     match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["view", n, dir] => {
             let n = session(n)?;
@@ -86,6 +89,7 @@ fn run(args: &[String]) -> Result<(), String> {
         ["mdbook-formulas", mode] => formulas::preprocess(mode),
         ["book"] => book::build(&root(), false),
         ["book", "--open"] => book::build(&root(), true),
+        ["book-tools"] => book::install_tools(),
         _ => Err(usage.into()),
     }
 }
