@@ -1,7 +1,8 @@
 //! Tells the crate which course session it is built for, as the environment
 //! variable `RAYCOURSE_SESSION` (read by `src/scene_file/features.rs`): the highest
-//! of the features `s1`..`s7` that Cargo enabled, or, in a session view, which has
-//! no session features, the highest `sessions/sN` folder it holds. And, as
+//! of the session features (`s1`, `s2`, ..., as `Cargo.toml` names them) that Cargo
+//! enabled, or, in a session view, which has no session features, the highest
+//! `sessions/sN` folder it holds. And, as
 //! `RAYCOURSE_MADE`, what the crate is: the course's crate (`features`), a session
 //! view (`view`) or a student's exercise crate (`exercises`, marked so in its
 //! `Cargo.toml`), so that a message about a later session reads right in each;
@@ -13,28 +14,28 @@
 use std::path::{Path, PathBuf};
 
 fn main() {
-    let enabled = (1..=7)
+    // The folder Cargo runs this script for, read when it runs: a copy of the crate
+    // built into the same target folder may share this script's compiled binary.
+    let root = PathBuf::from(std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets it"));
+    let manifest = std::fs::read_to_string(root.join("Cargo.toml"))
+        .ok()
+        .and_then(|text| text.parse::<toml::Table>().ok())
+        .unwrap_or_default();
+    let enabled = sessions_named(manifest.get("features").and_then(toml::Value::as_table))
         .filter(|n| std::env::var_os(format!("CARGO_FEATURE_S{n}")).is_some())
         .max();
-    let session = enabled.unwrap_or_else(|| {
-        (1..=7)
-            .filter(|n| Path::new(&format!("sessions/s{n}")).is_dir())
-            .max()
-            .unwrap_or(1)
-    });
-    let manifest = std::fs::read_to_string("Cargo.toml").unwrap_or_default();
+    let folders: Vec<u32> = std::fs::read_dir(root.join("sessions"))
+        .map(|entries| sessions_named_in(entries.flatten().map(|e| e.file_name())))
+        .unwrap_or_default();
+    let session = enabled.unwrap_or_else(|| folders.iter().copied().max().unwrap_or(1));
     let made = if enabled.is_some() {
         "features"
-    } else if manifest
-        .lines()
-        .skip_while(|l| l.trim() != "[package.metadata.raycourse]")
-        .any(|l| l.trim() == "exercises = true")
-    {
+    } else if marked_exercises(&manifest) {
         "exercises"
     } else {
         "view"
     };
-    write_stages();
+    write_stages(&root, &folders);
     println!("cargo::rustc-env=RAYCOURSE_SESSION={session}");
     println!("cargo::rustc-env=RAYCOURSE_MADE={made}");
     // In an exercise crate the checklist compares the student's functions with the
@@ -58,15 +59,39 @@ struct Found {
     path: PathBuf,
 }
 
-/// Writes `stages.rs` into `OUT_DIR`: a `Stage` for every scene file of
-/// `sessions/s1` to `sessions/s7`, in course order (by session, then figure, the
-/// extra stages last, by name), each with its text included.
-fn write_stages() {
-    let mut found: Vec<Found> = (1..=7).flat_map(stages_of).collect();
-    assert!(
-        !found.is_empty(),
-        "no stage's file in sessions/s1 to sessions/s7"
-    );
+/// The sessions among the features `features`: those named `sN`.
+fn sessions_named(features: Option<&toml::Table>) -> impl Iterator<Item = u32> + '_ {
+    features
+        .into_iter()
+        .flat_map(|table| table.keys())
+        .filter_map(|name| name.strip_prefix('s')?.parse().ok())
+}
+
+/// The sessions among folder names: those named `sN`.
+fn sessions_named_in(names: impl Iterator<Item = std::ffi::OsString>) -> Vec<u32> {
+    names
+        .filter_map(|name| name.to_str()?.strip_prefix('s')?.parse().ok())
+        .collect()
+}
+
+/// Whether the manifest marks the crate as a student's exercise crate:
+/// `[package.metadata.raycourse] exercises = true`.
+fn marked_exercises(manifest: &toml::Table) -> bool {
+    let marked = manifest
+        .get("package")
+        .and_then(|p| p.get("metadata"))
+        .and_then(|m| m.get("raycourse"))
+        .and_then(|r| r.get("exercises"));
+    marked.and_then(toml::Value::as_bool) == Some(true)
+}
+
+/// Writes `stages.rs` into `OUT_DIR`: a `Stage` for every scene file of the
+/// `sessions` folders of `root` (each `sessions/sN` of `folders`), in course order
+/// (by session, then figure, the extra stages last, by name), each with its text
+/// included.
+fn write_stages(root: &Path, folders: &[u32]) {
+    let mut found: Vec<Found> = folders.iter().flat_map(|&n| stages_of(root, n)).collect();
+    assert!(!found.is_empty(), "no stage's file in sessions/sN");
     found.sort_by_key(|s| (s.session, s.figure.unwrap_or(u32::MAX), s.name.clone()));
     let mut text = String::from("&[\n");
     for s in &found {
@@ -83,11 +108,8 @@ fn write_stages() {
 
 /// The stages of `sessions/sN`, in no order; a file without a `[stage]` table with a
 /// title stops the build, naming the file.
-fn stages_of(session: u32) -> Vec<Found> {
-    // The folder Cargo runs this script for, read when it runs: a copy of the crate
-    // built into the same target folder may share this script's compiled binary.
-    let root = std::env::var_os("CARGO_MANIFEST_DIR").expect("cargo sets CARGO_MANIFEST_DIR");
-    let folder = Path::new(&root).join(format!("sessions/s{session}"));
+fn stages_of(root: &Path, session: u32) -> Vec<Found> {
+    let folder = root.join(format!("sessions/s{session}"));
     let Ok(entries) = std::fs::read_dir(&folder) else {
         return vec![];
     };

@@ -148,12 +148,20 @@ fn bindings(root: &Path, wasm: &Path) -> Result<(), String> {
 fn pinned_wasm_bindgen(root: &Path) -> Result<String, String> {
     let manifest = std::fs::read_to_string(root.join("web/Cargo.toml"))
         .map_err(|e| format!("web/Cargo.toml: {e}"))?;
-    manifest
-        .lines()
-        .find_map(|l| l.strip_prefix("wasm-bindgen = \"="))
-        .and_then(|rest| rest.strip_suffix('"'))
-        .map(str::to_owned)
-        .ok_or_else(|| "web/Cargo.toml: no `wasm-bindgen = \"=X.Y.Z\"` line".into())
+    pinned_in(&manifest).ok_or_else(|| {
+        "web/Cargo.toml: no `wasm-bindgen = \"=X.Y.Z\"` among the dependencies".into()
+    })
+}
+
+/// The version that the manifest `text` pins wasm-bindgen to, `=X.Y.Z`, read as
+/// TOML: a plain string or a table's `version`.
+fn pinned_in(text: &str) -> Option<String> {
+    let doc: toml_edit::DocumentMut = text.parse().ok()?;
+    let dependency = doc.get("dependencies")?.get("wasm-bindgen")?;
+    let version = dependency
+        .as_str()
+        .or_else(|| dependency.get("version")?.as_str())?;
+    version.strip_prefix('=').map(str::to_owned)
 }
 
 /// Installs `package` at `version` with cargo unless `tool --version` names it
@@ -179,5 +187,24 @@ fn run(command: &mut Command) -> Result<(), String> {
         Ok(())
     } else {
         Err(format!("{command:?} failed ({status})"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::pinned_in;
+
+    #[test]
+    fn the_pinned_wasm_bindgen_is_read_from_the_manifest_whatever_its_form() {
+        let plain = "[package]\nname = \"web\"\n\n[dependencies]\nwasm-bindgen = \"=0.2.130\"\n";
+        assert_eq!(pinned_in(plain).as_deref(), Some("0.2.130"));
+        let table =
+            "[dependencies]\nwasm-bindgen = { version = \"=0.2.1\", default-features = false }\n";
+        assert_eq!(pinned_in(table).as_deref(), Some("0.2.1"));
+        assert_eq!(pinned_in("[dependencies]\nwasm-bindgen = \"0.2\"\n"), None);
+        assert_eq!(
+            pinned_in("[dev-dependencies]\nwasm-bindgen = \"=0.2.130\"\n"),
+            None
+        );
     }
 }
