@@ -1,47 +1,19 @@
-//! The command line's options beyond the course: adaptive sampling and its map, and
-//! the fast engine, with the checks that it gives the course's bytes.
+//! What the command line does beyond the course: a job read with its settings beyond
+//! the course, adaptive sampling's map, and the fast engine, with the checks that it
+//! gives the course's bytes. The options themselves are in `beyond_options.rs`.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-use clap::Args;
-use raycourse::maths::Real;
 use raycourse::render::png::encode_rgb8;
 use raycourse::scene_file::beyond::{BeyondOverrides, load_with_beyond, stage_with_beyond};
 use raycourse::{Overrides, Render, Scene, Stage};
 
+use crate::commands::beyond_options::BeyondArgs;
 use crate::commands::failure::Failure;
 use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
 use crate::commands::output::{Timed, timed_render, write};
 use crate::commands::stage::render_stage;
-
-/// A render's settings beyond the course.
-#[derive(Args, Clone, Debug, Default)]
-pub struct BeyondArgs {
-    /// Adaptive sampling: each pixel takes samples until the estimated relative
-    /// standard error of its mean is below this (such as 0.02), up to 4 times `--spp`.
-    #[arg(long)]
-    pub noise: Option<Real>,
-    /// Also write a grey PNG of the samples each pixel took, black for the fewest
-    /// and white for the most.
-    #[arg(long)]
-    pub noise_map: Option<PathBuf>,
-    /// Render with the fast engine, beyond the course: the same image as the
-    /// course's functions give, in less time; an edit of a course function does not
-    /// show in it.
-    #[arg(long)]
-    pub fast: bool,
-}
-
-impl BeyondArgs {
-    /// The scene-file settings beyond the course that these options replace.
-    pub fn overrides(&self) -> BeyondOverrides {
-        BeyondOverrides {
-            noise: self.noise,
-            fast: self.fast,
-        }
-    }
-}
 
 impl Job {
     /// The scene file at `path` with `overrides`, and the settings beyond the course

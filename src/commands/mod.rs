@@ -17,6 +17,8 @@ pub mod stage;
 #[cfg(feature = "beyond")]
 pub mod beyond;
 #[cfg(feature = "beyond")]
+pub mod beyond_options;
+#[cfg(feature = "beyond")]
 pub mod converge;
 #[cfg(feature = "beyond")]
 pub mod plot;

@@ -76,7 +76,7 @@ pub struct RenderArgs {
     /// Settings beyond the course: adaptive sampling, the fast engine.
     #[cfg(feature = "beyond")]
     #[command(flatten)]
-    pub beyond: crate::commands::beyond::BeyondArgs,
+    pub beyond: crate::commands::beyond_options::BeyondArgs,
     /// Instead of the render, an image of what the renderer sees through each
     /// pixel's centre: the normal, the depth, the albedo, the object, or the cost
     /// (spheres, boxes and triangles tested), into `out/<name>-<kind>.png`.
