@@ -2,24 +2,17 @@
 //! snapshot files are shared by all feature levels, so a stage renders byte for
 //! byte the same in every later session's build.
 
-use std::num::NonZeroU32;
-
 use raycourse::maths::Real;
 use raycourse::{Overrides, Render, Stage, encode_png, render, stages};
 
-const SIZE: NonZeroU32 = NonZeroU32::new(96).unwrap();
+const SIZE: u32 = 96;
 
 /// At most this many samples per pixel: enough to see what a stage does.
 const SAMPLES: u32 = 2;
 
 fn render_small(stage: &Stage, threads: usize) -> (Render, Real) {
     let course = stage.scene(&Overrides::default()).unwrap().settings.samples;
-    let overrides = Overrides {
-        width: Some(SIZE),
-        height: Some(SIZE),
-        samples: NonZeroU32::new(course.min(SAMPLES)),
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(SIZE, SIZE, course.min(SAMPLES));
     let scene = stage
         .scene(&overrides)
         .expect("built-in scene files are valid");

@@ -49,6 +49,18 @@ pub struct Overrides {
 }
 
 impl Overrides {
+    /// A render of `width` x `height` pixels at `samples` per pixel, the rest as the
+    /// scene file has it: what the tests, the checklist and the page render a stage
+    /// at. A 0 keeps the file's value.
+    pub fn sized(width: u32, height: u32, samples: u32) -> Overrides {
+        Overrides {
+            width: NonZeroU32::new(width),
+            height: NonZeroU32::new(height),
+            samples: NonZeroU32::new(samples),
+            ..Overrides::default()
+        }
+    }
+
     /// Puts the overrides into `file`; an error names the key if the plunge is not a
     /// finite angle.
     pub fn apply(&self, file: &mut SceneFile) -> Result<(), (&'static str, String)> {

@@ -5,8 +5,6 @@
 //! does), and the first ray or hit that differs is explained by the exercise's
 //! function that made it, with its inputs and both answers.
 
-use std::num::NonZeroU32;
-
 use raycourse::maths::{Colour, Real, Vec3};
 use raycourse::{Overrides, Stage};
 
@@ -384,10 +382,7 @@ fn shading(yours: Colour, theirs: Colour, gamma: Real) -> Option<String> {
 /// The overrides of a stage line: `width` x `height`, `samples`, `seed`.
 pub fn overrides(width: u32, height: u32, samples: u32, seed: Option<u64>) -> Overrides {
     Overrides {
-        width: NonZeroU32::new(width),
-        height: NonZeroU32::new(height),
-        samples: NonZeroU32::new(samples),
         seed,
-        ..Overrides::default()
+        ..Overrides::sized(width, height, samples)
     }
 }

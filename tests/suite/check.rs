@@ -3,7 +3,6 @@
 //! renderer (a scene-file edit, or a variant of the code written here), fails and
 //! gets its hint.
 
-use std::num::NonZeroU32;
 use std::path::{Path, PathBuf};
 
 use crate::common::{run, run_in_locale, text};
@@ -43,11 +42,8 @@ fn scene_at(
     size: u32,
 ) -> Scene {
     let overrides = Overrides {
-        width: NonZeroU32::new(size),
-        height: NonZeroU32::new(size),
-        samples: samples.and_then(NonZeroU32::new),
         seed: Some(seed),
-        ..Overrides::default()
+        ..Overrides::sized(size, size, samples.unwrap_or(0))
     };
     let mut file: toml::Table = edit(stage.source).parse().unwrap();
     file["render"]

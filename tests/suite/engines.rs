@@ -4,8 +4,6 @@
 //! the fast engine does take over where it can (four paths at a time in the rooms of
 //! diffuse spheres, its own hierarchy for the meshes).
 
-use std::num::NonZeroU32;
-
 use raycourse::engines::render;
 use raycourse::fast::paths::paths_at_once;
 use raycourse::scene::beyond::{Beyond, Sampler};
@@ -19,12 +17,7 @@ type Job = (Scene, Beyond);
 /// with fewer than four paths), at most `samples` samples per pixel, with `extra`
 /// and the stage's sampler or `sampler`.
 fn small(stage: &Stage, samples: u32, extra: BeyondOverrides, sampler: Option<Sampler>) -> Job {
-    let overrides = Overrides {
-        width: NonZeroU32::new(30),
-        height: NonZeroU32::new(9),
-        samples: NonZeroU32::new(samples),
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(30, 9, samples);
     let (scene, mut beyond) = stage_with_beyond(stage, &overrides, &extra).unwrap();
     if let Some(sampler) = sampler {
         beyond.sampler = sampler;
@@ -179,12 +172,7 @@ fn meshes_cast_the_same_shadows_under_a_point_light() {
             .replace("light_sampling = true", "shadows = true");
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(stage.path);
         let scene = |fast: bool| {
-            let overrides = Overrides {
-                width: NonZeroU32::new(24),
-                height: NonZeroU32::new(20),
-                samples: NonZeroU32::new(2),
-                ..Overrides::default()
-            };
+            let overrides = Overrides::sized(24, 20, 2);
             let fast = BeyondOverrides {
                 fast,
                 ..BeyondOverrides::default()
@@ -224,11 +212,7 @@ fn single_precision_images_match_the_double_precision_references() {
         let reference = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join(format!("tests/exercises/references/{name}.png"));
         let reference = image::open(&reference).unwrap().into_rgb16();
-        let overrides = Overrides {
-            width: NonZeroU32::new(reference.width()),
-            height: NonZeroU32::new(reference.height()),
-            ..Overrides::default()
-        };
+        let overrides = Overrides::sized(reference.width(), reference.height(), 0);
         let fast = BeyondOverrides {
             fast: true,
             ..BeyondOverrides::default()

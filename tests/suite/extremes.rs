@@ -184,12 +184,7 @@ mod optics {
     #[test]
     fn index_one_lets_rays_pass_straight() {
         use raycourse::{Overrides, find_stage, render};
-        use std::num::NonZeroU32;
-        let overrides = Overrides {
-            width: NonZeroU32::new(48),
-            height: NonZeroU32::new(48),
-            ..Overrides::default()
-        };
+        let overrides = Overrides::sized(48, 48, 0);
         let mut glass = find_stage(2, "glass").unwrap().scene(&overrides).unwrap();
         glass.settings.shadows = false;
         glass.spheres[0].material = Material::Glass { index: 1.0 };

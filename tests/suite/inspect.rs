@@ -2,8 +2,6 @@
 //! explains it in numbers that can be checked by hand, and the images of what the
 //! renderer sees count exactly what each search tests.
 
-use std::num::NonZeroU32;
-
 use raycourse::inspect::aov::{Aov, see};
 use raycourse::inspect::path::Probe;
 use raycourse::inspect::probe::{ProbeError, probe};
@@ -16,12 +14,7 @@ use crate::common::{run, text};
 fn small(name: &str, size: u32, samples: u32) -> Scene {
     let stage = stages().find(|s| s.name == name).unwrap();
     let course = stage.scene(&Overrides::default()).unwrap().settings.samples;
-    let overrides = Overrides {
-        width: NonZeroU32::new(size),
-        height: NonZeroU32::new(size),
-        samples: NonZeroU32::new(course.min(samples)),
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(size, size, course.min(samples));
     stage.scene(&overrides).unwrap()
 }
 

@@ -4,8 +4,6 @@
 //! it directly. Both estimate the direct light on the floor: they must agree in mean,
 //! and light sampling must be several times more accurate at equal samples.
 
-use std::num::NonZeroU32;
-
 use raycourse::integrator::Tracer;
 use raycourse::maths::Real;
 use raycourse::{Overrides, Scene, find_stage};
@@ -18,16 +16,12 @@ const ROWS: std::ops::Range<u32> = 46..52;
 const COLUMNS: std::ops::Range<u32> = 38..44;
 
 fn scene(name: &str, bounces: u32, samples: u32) -> Scene {
-    let size = NonZeroU32::new(SIZE);
     find_stage(4, name)
         .unwrap()
         .scene(&Overrides {
-            width: size,
-            height: size,
-            samples: NonZeroU32::new(samples),
             bounces: Some(bounces),
             seed: Some(5),
-            ..Overrides::default()
+            ..Overrides::sized(SIZE, SIZE, samples)
         })
         .unwrap()
 }

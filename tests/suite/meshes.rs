@@ -293,14 +293,8 @@ fn read_obj_text(text: &[u8]) -> ObjData {
 #[test]
 fn mesh_stages_render_the_same_bytes_whatever_the_search() {
     use raycourse::{encode_png, find_stage, render};
-    use std::num::NonZeroU32;
 
-    let overrides = Overrides {
-        width: NonZeroU32::new(40),
-        height: NonZeroU32::new(40),
-        samples: NonZeroU32::new(1),
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(40, 40, 1);
     let png = |session: u32, name: &str| {
         let scene = find_stage(session, name)
             .unwrap()
@@ -387,16 +381,10 @@ fn a_scaled_scene_with_the_fast_hierarchy_renders_like_the_unscaled_one() {
     use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond};
     use raycourse::studies::scale::scaled;
     use raycourse::{Disk, encode_png, find_stage};
-    use std::num::NonZeroU32;
 
     let stage = find_stage(6, "bvh").unwrap();
     let bvh = stage.source;
-    let overrides = Overrides {
-        width: NonZeroU32::new(48),
-        height: NonZeroU32::new(48),
-        samples: NonZeroU32::new(1),
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(48, 48, 1);
     let fast = BeyondOverrides {
         fast: true,
         ..BeyondOverrides::default()

@@ -1,18 +1,11 @@
 //! What the stages show, checked on numbers rather than on snapshots: the disk's
 //! size, the light's direction, the shadow, the mirror's reflection.
 
-use std::num::NonZeroU32;
-
 use raycourse::maths::Real;
 use raycourse::{Film, Overrides, Scene, find_stage, render};
 
 fn scene(session: u32, name: &str, size: u32) -> Scene {
-    let size = NonZeroU32::new(size);
-    let overrides = Overrides {
-        width: size,
-        height: size,
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(size, size, 0);
     find_stage(session, name)
         .expect("stage of this build")
         .scene(&overrides)
@@ -103,12 +96,7 @@ fn shadows_offset_by(epsilon: &str) -> Film {
         "shadows = true",
         &format!("shadows = true\nshadow_offset = {epsilon}"),
     );
-    let size = NonZeroU32::new(128);
-    let overrides = Overrides {
-        width: size,
-        height: size,
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(128, 128, 0);
     film(&raycourse::parse_scene(&text, &stage.file(), &overrides).unwrap())
 }
 

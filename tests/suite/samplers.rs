@@ -3,8 +3,6 @@
 //! same mean as the course's independent numbers with less noise, they do not
 //! depend on the thread count, and an adaptive pixel stops where it should.
 
-use std::num::NonZeroU32;
-
 use raycourse::integrator::Tracer;
 use raycourse::maths::{Real, uniform, uniform_pair};
 use raycourse::samplers::adaptive::Estimate;
@@ -74,13 +72,9 @@ fn stage(name: &str, samples: u32, seed: u64, render_keys: &str) -> (Scene, Beyo
     let source = stage
         .source
         .replace("[render]", &format!("[render]\n{render_keys}"));
-    let size = NonZeroU32::new(48);
     let overrides = Overrides {
-        width: size,
-        height: size,
-        samples: NonZeroU32::new(samples),
         seed: Some(seed),
-        ..Overrides::default()
+        ..Overrides::sized(48, 48, samples)
     };
     let beyond = BeyondOverrides::default();
     parse_with_beyond(&source, &stage.file(), &overrides, &beyond, &Disk).unwrap()

@@ -21,7 +21,6 @@ use raycourse::maths::{PixelRng, Real, Vec3, pixel_rng, uniform};
 use raycourse::studies::scale::scaled;
 use raycourse::{Overrides, Scene, encode_png, find_stage, parse_scene, render};
 use rayon::prelude::*;
-use std::num::NonZeroU32;
 
 /// Whether this build computes in double precision.
 const DOUBLE: bool = cfg!(not(feature = "f32"));
@@ -175,12 +174,7 @@ fn floor(x: Real, z: Real) -> Vec3 {
 
 /// The comparison size, one sample per pixel.
 fn small() -> Overrides {
-    Overrides {
-        width: NonZeroU32::new(SIZE),
-        height: NonZeroU32::new(SIZE),
-        samples: NonZeroU32::new(1),
-        ..Overrides::default()
-    }
+    Overrides::sized(SIZE, SIZE, 1)
 }
 
 /// Pixels allowed to differ from the unscaled image: rays that pass within

@@ -1,8 +1,6 @@
 //! For the tests: a stage rendered as the command line renders it, to compare the
 //! page's work with.
 
-use std::num::NonZeroU32;
-
 use raycourse::Overrides;
 use raycourse::maths::Real;
 
@@ -12,11 +10,7 @@ use crate::assets;
 /// `size`, displayed with `gamma`, or with the stage's own where `None`.
 pub fn command_line_render(name: &str, size: u32, gamma: Option<Real>) -> Vec<u8> {
     let stage = raycourse::stages().find(|s| s.name == name).unwrap();
-    let overrides = Overrides {
-        width: NonZeroU32::new(size),
-        height: NonZeroU32::new(size),
-        ..Overrides::default()
-    };
+    let overrides = Overrides::sized(size, size, 0);
     let scene = stage.scene_from(&overrides, assets::stage_files()).unwrap();
     let gamma = gamma.unwrap_or(scene.settings.gamma);
     raycourse::render(&scene).film.to_rgb8(gamma)

@@ -344,7 +344,12 @@ fn towards_surface() -> impl Strategy<Value = (Vec3, Vec3)> {
     (
         direction(),
         direction(),
-        prop_oneof![Just(1.0 as Real), Just(1e-6 as Real), 1e-5..1e-3 as Real, 0.0..1.0 as Real],
+        prop_oneof![
+            Just(1.0 as Real),
+            Just(1e-6 as Real),
+            1e-5..1e-3 as Real,
+            0.0..1.0 as Real
+        ],
     )
         .prop_map(|(normal, across, cos)| {
             let tangent = (across - across.dot(normal) * normal)
