@@ -50,7 +50,7 @@ pub const MISTAKES: &[Mistake] = &[
         hint: "the image looks displayed without gamma correction: write min(255, L^(1/2.2)), not min(255, L)",
         french: [
             "pas de gamma",
-            "l'image semble affichée sans correction gamma : écrivez min(255, L^(1/2.2)), et non min(255, L)",
+            "l'image semble affichée sans correction gamma : écrivez min(255, L^(1/2,2)), et non min(255, L)",
         ],
         image: |c| {
             Ok(c.gamma_applies()
@@ -62,7 +62,7 @@ pub const MISTAKES: &[Mistake] = &[
         hint: "the image looks gamma-corrected twice: apply L^(1/2.2) once, when writing the pixel",
         french: [
             "gamma deux fois",
-            "l'image semble corrigée deux fois du gamma : appliquez L^(1/2.2) une seule fois, en écrivant le pixel",
+            "l'image semble corrigée deux fois du gamma : appliquez L^(1/2,2) une seule fois, en écrivant le pixel",
         ],
         image: |c| Ok(c.gamma_applies().then(|| c.map(|l, g| l.powf(1.0 / g)))),
     },
@@ -116,7 +116,7 @@ pub const MISTAKES: &[Mistake] = &[
         hint: "the image is turned half a turn: both the rows and the columns run the wrong way (row i counts from the bottom as H - 1 - row, and x grows with the column j)",
         french: [
             "un demi-tour",
-            "l'image a fait un demi-tour : les lignes et les colonnes vont toutes deux dans le mauvais sens (la ligne i, comptée depuis le bas, est H - 1 - ligne, et x croît avec la colonne j)",
+            "l'image a fait un demi-tour\u{a0}: les lignes et les colonnes vont toutes deux dans le mauvais sens (la ligne i, comptée depuis le bas, est H - 1 - ligne, et x croît avec la colonne j)",
         ],
         image: |c| Ok(Some(c.moved(|x, y, w, h| (w - 1 - x, h - 1 - y)))),
     },
@@ -125,7 +125,7 @@ pub const MISTAKES: &[Mistake] = &[
         hint: "rows and columns are swapped: the pixel of column j and row i is written at column i and row j (a pixel's index in the image is row * W + column)",
         french: [
             "lignes et colonnes échangées",
-            "les lignes et les colonnes sont échangées : le pixel de la colonne j et de la ligne i est écrit à la colonne i et à la ligne j (l'indice d'un pixel dans l'image est ligne * W + colonne)",
+            "les lignes et les colonnes sont échangées\u{a0}: le pixel de la colonne j et de la ligne i est écrit à la colonne i et à la ligne j (l'indice d'un pixel dans l'image est ligne * W + colonne)",
         ],
         image: |c| Ok((c.film.width == c.film.height).then(|| c.moved(|x, y, _, _| (y, x)))),
     },
@@ -134,7 +134,7 @@ pub const MISTAKES: &[Mistake] = &[
         hint: "the image is the stage's moved by one pixel: row i counts from the bottom as H - 1 - row (not H - row), and a pixel's centre is half a pixel in, x = j - W/2 + 0.5",
         french: [
             "décalée d'un pixel",
-            "l'image est celle de l'étape décalée d'un pixel : la ligne i, comptée depuis le bas, est H - 1 - ligne (et non H - ligne), et le centre d'un pixel est à un demi-pixel du bord, x = j - W/2 + 0.5",
+            "l'image est celle de l'étape décalée d'un pixel\u{a0}: la ligne i, comptée depuis le bas, est H - 1 - ligne (et non H - ligne), et le centre d'un pixel est à un demi-pixel du bord, x = j - W/2 + 0,5",
         ],
         image: |c| Ok(Some(c.shifted())),
     },
@@ -152,7 +152,7 @@ pub const MISTAKES: &[Mistake] = &[
         hint: "the glass bends rays the wrong way: going into glass, eta = n1 / n2 = 1 / 1.5; coming out, 1.5",
         french: [
             "indice inversé",
-            "le verre dévie les rayons dans le mauvais sens : en entrant dans le verre, eta = n1 / n2 = 1 / 1.5 ; en sortant, 1.5",
+            "le verre dévie les rayons dans le mauvais sens : en entrant dans le verre, eta = n1 / n2 = 1 / 1,5 ; en sortant, 1,5",
         ],
         image: inverted_index,
     },

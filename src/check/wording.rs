@@ -14,7 +14,7 @@ impl Report {
         let unit = if self.outcome.cell == 1 {
             say("pixels", "des pixels")
         } else {
-            say("blocks of 8 x 8 pixels", "des blocs de 8 x 8 pixels")
+            say("blocks of 8 x 8 pixels", "des blocs de 8 × 8 pixels")
         };
         let share = language.number(100.0 * self.outcome.share(), 1);
         let name = stage.name;
@@ -38,7 +38,7 @@ impl Report {
                 format!("  brightness against the reference: red x{r}, green x{g}, blue x{b}")
             }
             Language::French => format!(
-                "  luminosité par rapport à la référence\u{a0}: rouge x{r}, vert x{g}, bleu x{b}"
+                "  luminosité par rapport à la référence\u{a0}: rouge ×\u{a0}{r}, vert ×\u{a0}{g}, bleu ×\u{a0}{b}"
             ),
         });
         lines.extend(self.where_line(language));

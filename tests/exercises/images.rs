@@ -166,7 +166,7 @@ fn compare_noisy(yours: &Film, reference: &Linear, settings: &Settings) -> Outco
     }
     let mut why = say!(
         "{} of {} blocks of 8 x 8 pixels differ beyond the noise",
-        "{} blocs de 8 x 8 pixels sur {} diffèrent au-delà du bruit",
+        "{} blocs de 8 × 8 pixels sur {} diffèrent au-delà du bruit",
         outcome.differs.iter().filter(|d| **d).count(),
         outcome.differs.len()
     );
@@ -210,7 +210,7 @@ fn flip_hint(yours: &RgbImage, reference: &RgbImage) -> Option<String> {
     } else if !compare_pixels(&mirrored, reference, 2 * TOLERANCE).image_differs {
         Some(say!(
             "it is the reference mirrored left to right: column j grows to the right, x = j - W/2 + 0.5",
-            "l'image est la référence inversée de gauche à droite\u{a0}: la colonne j croît vers la droite, x = j - W/2 + 0.5"
+            "l'image est la référence inversée de gauche à droite\u{a0}: la colonne j croît vers la droite, x = j - W/2 + 0,5"
         ))
     } else {
         None
@@ -310,12 +310,12 @@ fn brightness_hint(
         return Some(if mean > 1.0 {
             say!(
                 "{percent}% brighter than the reference overall (per channel {r}x, {g}x, {b}x)",
-                "l'image est {percent}\u{a0}% plus claire que la référence dans l'ensemble (par canal {r}x{s}{g}x{s}{b}x)"
+                "l'image est {percent}\u{a0}% plus claire que la référence dans l'ensemble (par canal ×\u{a0}{r}{s}×\u{a0}{g}{s}×\u{a0}{b})"
             )
         } else {
             say!(
                 "{percent}% darker than the reference overall (per channel {r}x, {g}x, {b}x)",
-                "l'image est {percent}\u{a0}% plus sombre que la référence dans l'ensemble (par canal {r}x{s}{g}x{s}{b}x)"
+                "l'image est {percent}\u{a0}% plus sombre que la référence dans l'ensemble (par canal ×\u{a0}{r}{s}×\u{a0}{g}{s}×\u{a0}{b})"
             )
         });
     } else {

@@ -35,7 +35,7 @@ fn gave_expected(what: &str, gave: &str, expected: &str, tolerance: Real) -> Str
     let tolerance = decimal(tolerance.to_string());
     say!(
         "{what}: gave {gave}, expected {expected} (within {tolerance})",
-        "{what}\u{a0}: donne {gave}, attendu {expected} (à {tolerance} près)"
+        "{what}\u{a0}: obtenu {gave}, attendu {expected} (à {tolerance} près)"
     )
 }
 

@@ -214,7 +214,7 @@ fn sphere_distance() -> Outcome {
                 let radius = decimal(radius.to_string());
                 say!(
                     "{test}: a sphere of radius {radius} at {} {what}, the ray from {} along {}: gave {}, expected {}",
-                    "{test}\u{a0}: une sphère de rayon {radius} en {}, {quoi}, le rayon issu de {} selon {}\u{a0}: donne {}, attendu {}",
+                    "{test}\u{a0}: une sphère de rayon {radius} en {}, {quoi}, le rayon issu de {} selon {}\u{a0}: obtenu {}, attendu {}",
                     vec(centre),
                     vec(Vec3::ZERO),
                     vec(ray.direction),
@@ -249,7 +249,7 @@ fn far_sphere() -> Outcome {
     ensure(same_distance(gave, Some(expected), 0.05), || {
         say!(
             "Sphere::intersect: a sphere of radius 1 at (0.5, 0, -{far}), the ray from the origin along -z: gave {}, expected {} (the textbook discriminant loses 0.75 to rounding next to {far}^2: compute it as R^2 - |s - (s.d) d|^2)",
-            "Sphere::intersect\u{a0}: une sphère de rayon 1 en (0,5\u{a0}; 0\u{a0}; -{far}), le rayon issu de l'origine selon -z\u{a0}: donne {}, attendu {} (le discriminant du manuel perd 0,75 dans l'arrondi à côté de {far}^2\u{a0}: calculez-le comme R^2 - |s - (s.d) d|^2)",
+            "Sphere::intersect\u{a0}: une sphère de rayon 1 en (0,5\u{a0}; 0\u{a0}; -{far}), le rayon issu de l'origine selon -z\u{a0}: obtenu {}, attendu {} (le discriminant du manuel perd 0,75 dans l'arrondi à côté de {far}^2\u{a0}: calculez-le comme R^2 - |s - (s.d) d|^2)",
             maybe(gave),
             maybe(Some(expected))
         )
@@ -280,7 +280,7 @@ fn nearest_sphere() -> Outcome {
         || {
             say!(
                 "spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {}, expected {}",
-                "des sphères en z = -10, -5 et 3 (numéros 0, 1, 2), le rayon issu de l'origine selon -z\u{a0}: donne {}, attendu {}",
+                "des sphères en z = -10, -5 et 3 (numéros 0, 1, 2), le rayon issu de l'origine selon -z\u{a0}: obtenu {}, attendu {}",
                 nearest(gave),
                 nearest(Some((4.0, 1)))
             )
@@ -291,7 +291,7 @@ fn nearest_sphere() -> Outcome {
     ensure(gave.is_none(), || {
         say!(
             "the same spheres, the ray along +y: gave {}, expected {}",
-            "les mêmes sphères, le rayon selon +y\u{a0}: donne {}, attendu {}",
+            "les mêmes sphères, le rayon selon +y\u{a0}: obtenu {}, attendu {}",
             nearest(gave),
             nearest(None)
         )

@@ -85,7 +85,7 @@ fn gamma() -> Outcome {
             let (radiance, gamma) = (decimal(radiance.to_string()), decimal(gamma.to_string()));
             say!(
                 "radiance {radiance} with gamma {gamma}: gave {gave}, expected {expected}",
-                "luminance {radiance} avec un gamma de {gamma}\u{a0}: donne {gave}, attendu {expected}"
+                "luminance {radiance} avec un gamma de {gamma}\u{a0}: obtenu {gave}, attendu {expected}"
             )
         })?;
     }
@@ -164,7 +164,7 @@ fn spawn() -> Outcome {
         ensure(through.is_some_and(|t| t > 1e-3), || {
             say!(
                 "{what}, a ray going into the sphere from the hit point gave {}: expected the far side, about {} away (its origin must be pushed off the surface, inwards)",
-                "{what}, un rayon qui entre dans la sphère depuis le point d'intersection donne {}\u{a0}: attendu le côté opposé, à environ {} (son origine doit être décalée hors de la surface, vers l'intérieur)",
+                "{what}, un rayon qui entre dans la sphère depuis le point d'intersection donne {}, au lieu du côté opposé, à environ {} (son origine doit être décalée hors de la surface, vers l'intérieur)",
                 maybe(through),
                 decimal((2.0 * ball.radius).to_string())
             )
@@ -311,7 +311,7 @@ fn glass() -> Outcome {
             let eta = decimal(eta.to_string());
             say!(
                 "{what}: d = {}, N = {}, eta = n1 / n2 = {eta}: gave {}, expected {}",
-                "{quoi}\u{a0}: d = {}, N = {}, eta = n1 / n2 = {eta}\u{a0}: donne {}, attendu {}",
+                "{quoi}\u{a0}: d = {}, N = {}, eta = n1 / n2 = {eta}\u{a0}: obtenu {}, attendu {}",
                 vec(d),
                 vec(n),
                 show(gave),

@@ -82,7 +82,7 @@ fn cosine_direction() -> Outcome {
         let (u1, u2, s) = (num(u1), num(u2), separator());
         return Err(say!(
             "(u1, u2) = ({u1}, {u2}) gave {}: expected a unit vector with z >= 0",
-            "(u1{s}u2) = ({u1}{s}{u2}) donne {}\u{a0}: attendu un vecteur unitaire avec z >= 0",
+            "(u1{s}u2) = ({u1}{s}{u2}) donne {}, au lieu d'un vecteur unitaire avec z >= 0",
             vec(w)
         ));
     }
@@ -203,7 +203,7 @@ fn bounce_weight(tracer: &mut Tracer, floor: &Hit) -> Outcome {
         let albedo = vec(ALBEDO);
         say!(
             "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo {albedo} gave {}, expected {albedo}{}: the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
-            "dans un four dont la paroi émet une luminance 1, la moyenne de {n} rebonds depuis le sol d'albédo {albedo} donne {}, attendu {albedo}{}\u{a0}: le rebond rapporte albédo * L(w) quand sa direction a pour densité cos(theta) / pi",
+            "dans un four dont la paroi émet une luminance 1, la moyenne de {n} rebonds depuis le sol d'albédo {albedo} donne {} au lieu de {albedo}{}\u{a0}: le rebond rapporte albédo * L(w) quand sa direction a pour densité cos(theta) / pi",
             vec(mean),
             weight_hint((mean / ALBEDO).element_sum() / 3.0)
         )
@@ -246,7 +246,7 @@ fn bounces_passed_on(tracer: &mut Tracer, floor: &Hit) -> Outcome {
         };
         say!(
             "inside the same furnace, with 3 bounces allowed, the mean bounce from the floor gave {}, expected 1.75 albedo = {}: the wall seen with 2 bounces left sends 1 + 0.5 (1 + 0.5){hint}",
-            "dans le même four, avec 3 rebonds permis, le rebond moyen depuis le sol donne {}, attendu 1,75 albédo = {}\u{a0}: la paroi vue avec 2 rebonds restants renvoie 1 + 0,5 (1 + 0,5){hint}",
+            "dans le même four, avec 3 rebonds permis, le rebond moyen depuis le sol donne {} au lieu de 1,75 albédo = {}\u{a0}: la paroi vue avec 2 rebonds restants renvoie 1 + 0,5 (1 + 0,5){hint}",
             vec(mean),
             vec(1.75 * ALBEDO)
         )
@@ -314,7 +314,7 @@ fn gaussian() -> Outcome {
             let s = separator();
             say!(
                 "u1 = {u1}: gave ({x}, {y}), expected finite numbers (the logarithm of 1 - u1, never of 0)",
-                "u1 = {u1}\u{a0}: donne ({x}{s}{y}), attendu des nombres finis (le logarithme de 1 - u1, jamais de 0)"
+                "u1 = {u1}\u{a0}: obtenu ({x}{s}{y}), attendu des nombres finis (le logarithme de 1 - u1, jamais de 0)"
             )
         })?;
     }

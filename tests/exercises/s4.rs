@@ -82,7 +82,7 @@ fn cone_sample() -> Outcome {
         let (u1, u2, s) = (num(u1), num(u2), separator());
         return Err(say!(
             "the cone of half-angle 30 degrees around +z, (u1, u2) = ({u1}, {u2}): gave {}, expected a unit vector with z >= cos(30) = 0.866",
-            "le cône de demi-angle 30 degrés autour de +z, (u1{s}u2) = ({u1}{s}{u2})\u{a0}: donne {}, attendu un vecteur unitaire avec z >= cos(30) = 0,866",
+            "le cône de demi-angle 30 degrés autour de +z, (u1{s}u2) = ({u1}{s}{u2})\u{a0}: obtenu {}, attendu un vecteur unitaire avec z >= cos(30) = 0,866",
             vec(w)
         ));
     }

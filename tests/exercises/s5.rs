@@ -125,7 +125,7 @@ fn triangle() -> Outcome {
         ensure(right, || {
             say!(
                 "the triangle {}, {}, {}, a ray {what}: gave {}, expected {}",
-                "le triangle {}, {}, {}, un rayon {quoi}\u{a0}: donne {}, attendu {}",
+                "le triangle {}, {}, {}, un rayon {quoi}\u{a0}: obtenu {}, attendu {}",
                 vec(a),
                 vec(b),
                 vec(c),
@@ -247,7 +247,7 @@ fn slab() -> Outcome {
         ensure(right, || {
             say!(
                 "the box from {} to {}, a ray {what} (d = {}): gave {}, expected {}",
-                "la boîte de {} à {}, un rayon {quoi} (d = {})\u{a0}: donne {}, attendu {}",
+                "la boîte de {} à {}, un rayon {quoi} (d = {})\u{a0}: obtenu {}, attendu {}",
                 vec(cube.min),
                 vec(cube.max),
                 vec(ray.direction),

@@ -222,7 +222,7 @@ fn orientation() -> Outcome {
     ensure(down.is_none(), || {
         say!(
             "the camera at {} looking straight down along up: gave {}, expected none (no right-hand direction)",
-            "la caméra en {} regardant droit vers le bas, le long de up\u{a0}: donne {}, attendu aucune orientation (pas de direction vers la droite)",
+            "la caméra en {} regardant droit vers le bas, le long de up\u{a0}: obtenu {}, attendu aucune orientation (pas de direction vers la droite)",
             vec(Vec3::new(0.0, 10.0, 0.0)),
             down.map_or(say!("none", "aucune orientation"), |(eye, _)| say!(
                 "a camera at {}",

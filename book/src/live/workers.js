@@ -90,7 +90,7 @@
     "matches": "correspond",
     "differs": "diffère",
     "choose your image first (a PNG, JPEG or PPM file)": "choisissez d'abord votre image (un fichier PNG, JPEG ou PPM)",
-    "the differences: differing pixels or blocks in red": "les différences : pixels ou blocs différents en rouge",
+    "the differences: differing pixels or blocks in red": "les différences\u00a0: pixels ou blocs différents en rouge",
     "the live demo": "la démo interactive",
     "grade": "noter",
     "the grading sheet, grades.csv": "la feuille de notes, grades.csv",

@@ -26,7 +26,7 @@ fn unit_above(w: Vec3, u1: Real, u2: Real) -> Result<(), String> {
     }
     let gave = say!(
         "{} gave {}: expected a unit vector with z >= 0",
-        "{} donne {}\u{a0}: attendu un vecteur unitaire avec z >= 0",
+        "{} donne {}, au lieu d'un vecteur unitaire avec z >= 0",
         at(u1, u2),
         v(w)
     );
@@ -298,7 +298,7 @@ pub fn gaussian(yours: impl Fn(Real, Real, Real) -> (Real, Real)) -> Outcome {
             if !(x.is_finite() && y.is_finite()) {
                 return Err(say!(
                     "sigma = {}, {}: gave ({}, {}), expected finite numbers (the logarithm of 1 - u1, never of 0)",
-                    "sigma = {}, {}\u{a0}: donne ({}\u{a0}; {}), attendu des nombres finis (le logarithme de 1 - u1, jamais de 0)",
+                    "sigma = {}, {}\u{a0}: obtenu ({}\u{a0}; {}), attendu des nombres finis (le logarithme de 1 - u1, jamais de 0)",
                     n(sigma),
                     at(u1, u2),
                     n(x),

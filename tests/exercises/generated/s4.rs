@@ -55,7 +55,7 @@ pub fn cone_sample(yours: impl Fn(&Cone, Real, Real) -> Vec3) -> Outcome {
             }
             Err(say!(
                 "the cone of sin^2(theta_max) = {} (1 - cos(theta_max) = {}), {}: gave {}, expected a unit vector of the cone, 1 - z <= 1 - cos(theta_max)",
-                "le cône de sin^2(theta_max) = {} (1 - cos(theta_max) = {}), {}\u{a0}: donne {}, attendu un vecteur unitaire du cône, 1 - z <= 1 - cos(theta_max)",
+                "le cône de sin^2(theta_max) = {} (1 - cos(theta_max) = {}), {}\u{a0}: obtenu {}, attendu un vecteur unitaire du cône, 1 - z <= 1 - cos(theta_max)",
                 n(sin2),
                 n(cone.one_minus_cos_max),
                 at(u1, u2),
@@ -176,7 +176,7 @@ pub fn disk(yours: impl Fn(Real, Real) -> (Real, Real)) -> Outcome {
             }
             Err(say!(
                 "{} gave ({}, {}): expected a point of the unit disk, x^2 + y^2 <= 1",
-                "{} donne ({}\u{a0}; {})\u{a0}: attendu un point du disque unité, x^2 + y^2 <= 1",
+                "{} donne ({}\u{a0}; {}), au lieu d'un point du disque unité, x^2 + y^2 <= 1",
                 at(u1, u2),
                 n(x),
                 n(y)
