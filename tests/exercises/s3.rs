@@ -99,8 +99,14 @@ fn cosine_direction() -> Outcome {
         )
     })?;
     close(&mean_of("cos^2(theta)"), z2, 0.5, 0.01)?;
-    close(&mean_of("x"), x, 0.0, 0.01)?;
-    close(&mean_of("y"), y, 0.0, 0.01)?;
+    let whole_circle = |e: String| {
+        say!(
+            "{e}: the azimuth phi = 2 pi u covers the whole circle, evenly, so that x and y average 0",
+            "{e}\u{a0}: l'azimut phi = 2 pi u parcourt tout le cercle, uniformément, si bien que x et y ont une moyenne nulle"
+        )
+    };
+    close(&mean_of("x"), x, 0.0, 0.01).map_err(whole_circle)?;
+    close(&mean_of("y"), y, 0.0, 0.01).map_err(whole_circle)?;
     close(&mean_of("x^2"), x2, 0.25, 0.01)?;
     generated::cosine_direction(sample_cosine_hemisphere)
 }

@@ -94,7 +94,13 @@ fn cone_sample() -> Outcome {
         z,
         0.9330,
         0.002,
-    )?;
+    )
+    .map_err(|e| {
+        say!(
+            "{e}: uniform over the cone's solid angle, cos(theta) is uniform between cos(theta_max) and 1 (not theta between 0 and theta_max)",
+            "{e}\u{a0}: uniformes sur l'angle solide du cône, les directions ont un cos(theta) uniforme entre cos(theta_max) et 1 (et non un theta uniforme entre 0 et theta_max)"
+        )
+    })?;
     close(&mean_of("x"), x, 0.0, 0.005)?;
     close(&mean_of("y"), y, 0.0, 0.005)?;
     generated::cone_sample(Cone::sample)
@@ -201,8 +207,8 @@ fn thin_lens() -> Outcome {
         let s = (focus.z - origin.z) / direction.z;
         close_vec(
             &say!(
-                "the ray from {} along {}, where it crosses the focus plane z = -10",
-                "le rayon issu de {} selon {}, là où il traverse le plan de mise au point z = -10",
+                "the ray from {} along {}, where it crosses the focus plane z = -10 (a plane at the focus distance along the view, not a sphere around the eye: the pinhole direction is scaled so that its z is -focus)",
+                "le rayon issu de {} selon {}, là où il traverse le plan de mise au point z = -10 (un plan à la distance de mise au point le long de la visée, non une sphère autour de l'œil\u{a0}: la direction du sténopé est mise à l'échelle pour que son z vaille -focus)",
                 vec(origin),
                 vec(direction)
             ),

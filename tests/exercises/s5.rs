@@ -211,8 +211,8 @@ fn slab() -> Outcome {
         ),
         (
             [
-                "from (0, 0, 5) along -z with t_max = 3",
-                "issu de (0\u{a0}; 0\u{a0}; 5) selon -z avec t_max = 3",
+                "from (0, 0, 5) along -z with t_max = 3 (entered at t = 4, beyond t_max: missed, for the interval starts as [0, t_max])",
+                "issu de (0\u{a0}; 0\u{a0}; 5) selon -z avec t_max = 3 (entré en t = 4, au-delà de t_max\u{a0}: manqué, car l'intervalle part de [0, t_max])",
             ],
             Vec3::new(0.0, 0.0, 5.0),
             z,

@@ -327,7 +327,10 @@ fn smooth_normal() -> Outcome {
             centre,
         ),
         (
-            ["at the centre, seen from below", "au centre, vu de dessous"],
+            [
+                "at the centre, seen from below (the shading normal is turned to the side the geometric normal faces)",
+                "au centre, vu de dessous (la normale d'ombrage est tournée du côté où regarde la normale géométrique)",
+            ],
             [third, third, third],
             -Vec3::Z,
             -centre,

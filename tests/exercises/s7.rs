@@ -200,7 +200,10 @@ fn orientation() -> Outcome {
             1e-4,
         )?;
         close_vec(
-            &say!("{what}: right", "{what}\u{a0}: right (vers la droite)"),
+            &say!(
+                "{what}: right = forward x up, normalised (the cross product's order gives its sign)",
+                "{what}\u{a0}: right (vers la droite) = forward x up, normalisé (l'ordre du produit vectoriel en donne le signe)"
+            ),
             r,
             right,
             1e-5,

@@ -456,6 +456,15 @@ async function access(browser, base) {
     assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
     await page.close();
   });
+  await test("session 6's cost image is named by what it shows, as its caption says", async () => {
+    const page = await open(browser, `${base}session6.html?live-size=16`);
+    await rendered(page);
+    await page.waitForFunction(() => /on average/.test(document.querySelector(".live-cost + figcaption").textContent),
+      { timeout: 120000 });
+    const label = await page.evaluate(() => document.querySelector("canvas.live-cost").getAttribute("aria-label"));
+    assert(/^the cost image, cost: [\d.]+ tests per camera ray on average$/.test(label), `the cost image says: ${label}`);
+    await page.close();
+  });
   await test("on a phone, session 7's image turns under a finger, and the page does not scroll", async () => {
     const phone = (page) => page.setViewport({ width: 360, height: 740, isMobile: true, hasTouch: true });
     const page = await open(browser, `${base}session7.html?live-size=24`, phone);

@@ -148,6 +148,7 @@
         this.costCanvas = element("canvas", { className: "live-cost", width: this.size, height: this.size });
         this.costCaption = element("figcaption", { textContent: say("cost: tests per camera ray") });
         this.costCanvas.setAttribute("role", "img");
+        this.costCanvas.setAttribute("aria-label", `${say("the cost image")}, ${this.costCaption.textContent}`);
         images.append(element("figure", {}, this.costCanvas, this.costCaption));
       }
       if (this.setup.orbit) this.orbit();
@@ -315,6 +316,7 @@
       if (fast) {
         this.costCanvas.getContext("2d").clearRect(0, 0, this.size, this.size);
         this.costCaption.textContent = say("cost: counted for the course's searches only");
+        this.costCanvas.setAttribute("aria-label", `${say("the cost image")}, ${this.costCaption.textContent}`);
         this.showTimes();
         return;
       }
