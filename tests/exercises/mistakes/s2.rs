@@ -178,13 +178,26 @@ pub const MISTAKES: &[Mistake] = &[
 ];
 
 /// Session 2's right answers written otherwise than the course's.
-pub const RIGHT: &[Right] = &[Right {
-    exercise: "s2.4",
-    what: "d + 2 cos(theta) N, with cos(theta) = -d . N",
-    run: || {
-        generated::reflect(|d, normal| {
-            let cos = -d.dot(normal);
-            d + 2.0 * cos * normal
-        })
+pub const RIGHT: &[Right] = &[
+    Right {
+        exercise: "s2.4",
+        what: "d + 2 cos(theta) N, with cos(theta) = -d . N",
+        run: || {
+            generated::reflect(|d, normal| {
+                let cos = -d.dot(normal);
+                d + 2.0 * cos * normal
+            })
+        },
     },
-}];
+    Right {
+        exercise: "s2.5",
+        what: "the textbook's eta d + (eta cos_i - sqrt(k)) N, k = 1 - eta^2 (1 - cos_i^2)",
+        run: || {
+            generated::refract(|d, normal, eta| {
+                let cos_i = -d.dot(normal);
+                let k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+                (k >= 0.0).then(|| eta * d + (eta * cos_i - k.sqrt()) * normal)
+            })
+        },
+    },
+];
