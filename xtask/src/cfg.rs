@@ -39,10 +39,34 @@ fn session_feature(meta: &Meta) -> Option<u32> {
 /// `beyond`, which no view holds, counts as the session after the last.
 pub fn session_of(name: &str) -> Option<u32> {
     if name == "beyond" {
-        return Some(8);
+        return Some(last_session() + 1);
     }
     let number = name.strip_prefix('s')?.parse().ok()?;
-    (1..=7).contains(&number).then_some(number)
+    (1..=last_session()).contains(&number).then_some(number)
+}
+
+/// The course's last session: the highest of the session features (`s1`, `s2`,
+/// ...) in the crate's `Cargo.toml`, read once.
+pub fn last_session() -> u32 {
+    static LAST: std::sync::OnceLock<u32> = std::sync::OnceLock::new();
+    *LAST.get_or_init(|| {
+        let manifest = std::fs::read_to_string(crate::root().join("Cargo.toml"));
+        last_session_in(&manifest.unwrap_or_default())
+    })
+}
+
+/// The highest session feature `sN` of the manifest `text` (0 when it has none).
+pub fn last_session_in(text: &str) -> u32 {
+    let Ok(doc) = text.parse::<toml_edit::DocumentMut>() else {
+        return 0;
+    };
+    let features = doc.get("features").and_then(|f| f.as_table_like());
+    features
+        .into_iter()
+        .flat_map(|table| table.iter().map(|(name, _)| name.to_owned()))
+        .filter_map(|name| name.strip_prefix('s')?.parse().ok())
+        .max()
+        .unwrap_or(0)
 }
 
 /// Whether `meta` mentions a session feature anywhere.

@@ -32,7 +32,7 @@ use crate::view::write_view;
 /// filled in to stdout.
 pub fn preprocess(root: &Path) -> Result<(), String> {
     let views = root.join("target/book-views");
-    for n in 1..=7 {
+    for n in 1..=crate::cfg::last_session() {
         write_view(root, n, &views.join(format!("s{n}")))?;
     }
     let (context, mut book) = crate::preprocessor::read()?;
@@ -324,8 +324,8 @@ fn listing(directive: &str, views: &Path, words: &Words) -> Result<String, Strin
     let n: u32 = session
         .strip_prefix('s')
         .and_then(|n| n.parse().ok())
-        .filter(|n| (1..=7).contains(n))
-        .ok_or_else(|| format!("`{session}` is not a session s1 to s7"))?;
+        .filter(|n| (1..=crate::cfg::last_session()).contains(n))
+        .ok_or_else(|| format!("`{session}` is not a session of the course"))?;
     let path = |n: u32| -> PathBuf { views.join(format!("s{n}")).join(file) };
     let code = anchored(&path(n), anchor)?
         .ok_or_else(|| format!("no anchor `{anchor}` in {file} of session {n}"))?;

@@ -1,7 +1,7 @@
 //! The developer and student tasks of `raycourse`:
 //!
 //! - `cargo xtask view sN DIR`: the crate as it stands after session N, in `DIR`;
-//! - `cargo xtask views DIR`: the views of all seven sessions, in `DIR/s1` ... `DIR/s7`;
+//! - `cargo xtask views DIR`: the views of every session, in `DIR/s1`, `DIR/s2`, ...;
 //! - `cargo xtask exercise sN DIR`: session N's exercise crate, the view with the
 //!   session's exercises to write (`--only sN.K`: one of them; `--switch`: every
 //!   exercise of the build kept, stubbed while `RAYCOURSE_STUB` names it, for CI);
@@ -40,19 +40,20 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// The crate's root: the folder above this one.
-fn root() -> PathBuf {
+pub(crate) fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .expect("xtask lives in the crate's folder")
         .to_owned()
 }
 
-/// The session of `sN`, 1 to 7.
+/// The session of `sN`, from 1 to the last.
 fn session(text: &str) -> Result<u32, String> {
+    let last = cfg::last_session();
     text.strip_prefix('s')
         .and_then(|n| n.parse().ok())
-        .filter(|n| (1..=7).contains(n))
-        .ok_or_else(|| format!("`{text}` is not a session: expected s1 to s7"))
+        .filter(|n| (1..=last).contains(n))
+        .ok_or_else(|| format!("`{text}` is not a session: expected s1 to s{last}"))
 }
 
 fn run(args: &[String]) -> Result<(), String> {
@@ -67,7 +68,7 @@ fn run(args: &[String]) -> Result<(), String> {
             println!("session {n}'s view -> {dir}");
             Ok(())
         }
-        ["views", dir] => (1..=7)
+        ["views", dir] => (1..=cfg::last_session())
             .try_for_each(|n| view::write_view(&root(), n, &Path::new(dir).join(format!("s{n}")))),
         ["exercise", n, dir, ref more @ ..] => exercise(session(n)?, Path::new(dir), more),
         ["exercises"] => {
