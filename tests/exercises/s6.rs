@@ -266,9 +266,20 @@ fn walk() -> Outcome {
             _ => false,
         };
         ensure(right, || {
+            let why = match (gave, expected) {
+                (Some(t), Some(e)) if t > e => say!(
+                    ": a nearer hit lies in a node the walk left for later; go on with the rest of the stack, and skip only the nodes entered beyond the nearest hit so far",
+                    "\u{a0}: une intersection plus proche se trouve dans un nœud que le parcours a laissé pour plus tard\u{a0}; continuez avec le reste de la pile, en ne sautant que les nœuds où le rayon entre au-delà de l'intersection la plus proche trouvée"
+                ),
+                (None, Some(_)) => say!(
+                    ": every node whose box the ray enters must be walked, and each leaf's triangles tested",
+                    "\u{a0}: chaque nœud dont le rayon traverse la boîte doit être parcouru, et les triangles de chaque feuille testés"
+                ),
+                _ => String::new(),
+            };
             say!(
-                "ray {k} at Spot, from {} along {}: the walk gave {}, testing every triangle {}",
-                "rayon {k} vers Spot, issu de {} selon {}\u{a0}: le parcours donne {}, le test de chaque triangle {}",
+                "ray {k} at Spot, from {} along {}: the walk gave {}, testing every triangle {}{why}",
+                "rayon {k} vers Spot, issu de {} selon {}\u{a0}: le parcours donne {}, le test de chaque triangle {}{why}",
                 vec(ray.origin),
                 vec(ray.direction),
                 maybe(gave),
