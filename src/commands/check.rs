@@ -115,8 +115,8 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
 
 /// The image at `path`, as 8-bit RGB; a bad input otherwise.
 fn read_image(path: &Path) -> Result<RgbImage, Failure> {
-    let bytes =
-        std::fs::read(path).map_err(|e| Failure::Input(format!("{}: {e}", path.display())))?;
+    let bytes = std::fs::read(path)
+        .map_err(|e| Failure::Input(format!("{}: cannot read the image: {e}", path.display())))?;
     decode(path, &bytes).map_err(Failure::Input)
 }
 

@@ -691,6 +691,27 @@ fn a_sheet_shows_formulas_as_text_and_an_empty_folder_is_refused() {
     }
 }
 
+/// An image that is not there, or not an image, is a bad input (exit code 2)
+/// named by its file, in one line.
+#[test]
+fn an_image_that_cannot_be_read_is_refused_by_name() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("notes.png"), "not a picture").unwrap();
+    for (file, words) in [
+        ("nowhere.png", "nowhere.png: cannot read the image: "),
+        (
+            "notes.png",
+            "notes.png: not a PNG, JPEG or PPM image that can be read: ",
+        ),
+    ] {
+        let refused = check_in(dir.path(), &cache(), &["glass", file]);
+        assert_eq!(refused.status.code(), Some(2), "{file}");
+        let said = text(&refused.stderr);
+        assert!(said.contains(words), "{said}");
+        assert_eq!(said.lines().count(), 1, "one line: {said}");
+    }
+}
+
 /// `raycourse check -q --cache CACHE ARGS...`, run in `dir`.
 fn check_in(dir: &Path, cache: &Path, args: &[&str]) -> std::process::Output {
     let mut all = vec!["check", "-q", "--cache", cache.to_str().unwrap()];
