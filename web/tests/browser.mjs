@@ -274,6 +274,25 @@ async function checkPage(browser, base, stage, file) {
   return answer;
 }
 
+/** The check page at `url` grading the class folder `klass`: its state, lines,
+ * sheet and report. */
+async function gradeInPage(browser, url, klass) {
+  const page = await open(browser, url);
+  await page.waitForSelector('.live-check[data-state="ready"]', { timeout: 60000 });
+  const folder = await page.$(".live-check input.live-class-folder");
+  await folder.uploadFile(klass);
+  await page.click(".live-class button");
+  await page.waitForSelector('.live-check[data-state^="graded"], .live-check[data-state="error"]', { timeout: 300000 });
+  const graded = await page.evaluate(() => {
+    const root = document.querySelector(".live-check");
+    return { state: root.dataset.state, lines: root.querySelector(".live-class-lines").textContent,
+      csv: root.querySelector("a.live-sheet").dataset.csv, report: root.querySelector(".live-report").textContent };
+  });
+  graded.errors = page.errors;
+  await page.close();
+  return graded;
+}
+
 async function checks(browser, base) {
   const good = path.join(scratch, "shading.png");
   execFileSync(raycourse, ["s1", "shading", "--width", "64", "--height", "48", "--out", good, "--quiet"]);
@@ -301,7 +320,7 @@ async function checks(browser, base) {
     assert(answer.state === "differs", `the page says: ${answer.report}`);
     assert(/hint \([^)]*gamma/.test(answer.report), `no gamma hint in: ${answer.report}`);
   });
-  await test("the check page grades a class as check --all does: its lines, and its sheet to the byte", async () => {
+  await test("the check page grades a class as check --all does: its lines, and its sheet to the byte, in both languages", async () => {
     const gamma = path.join(scratch, "gamma.png");
     execFileSync(raycourse, ["s2", "gamma", "--width", "64", "--height", "64", "--out", gamma, "--quiet"]);
     const files = { "alice/shading.png": good, "alice/gamma.png": gamma, "bob/shading.png": good,
@@ -312,26 +331,19 @@ async function checks(browser, base) {
       fs.mkdirSync(path.dirname(path.join(klass, name)), { recursive: true });
       fs.copyFileSync(from, path.join(klass, name));
     }
-    const said = commandIn(scratch, "check", "--all", "class", "--csv", "sheet.csv", "--quiet", "--cache", path.join(scratch, "cache"));
-    assert(said.code === 1, `check --all: exit ${said.code}\n${said.output}`);
-    const page = await open(browser, `${base}check.html`);
-    await page.waitForSelector('.live-check[data-state="ready"]', { timeout: 60000 });
-    const folder = await page.$(".live-check input.live-class-folder");
-    await folder.uploadFile(klass);
-    await page.click(".live-class button");
-    await page.waitForSelector('.live-check[data-state^="graded"], .live-check[data-state="error"]', { timeout: 300000 });
-    const graded = await page.evaluate(() => {
-      const root = document.querySelector(".live-check");
-      return { state: root.dataset.state, lines: root.querySelector(".live-class-lines").textContent,
-        csv: root.querySelector("a.live-sheet").dataset.csv, report: root.querySelector(".live-report").textContent };
-    });
-    assert(graded.state === "graded-differing", `the page says ${graded.state}: ${graded.report}`);
-    const lines = said.output.split("\n").filter((l) => /^(alice|bob|carol) /.test(l)).join("\n");
-    assert(graded.lines.trim() === lines, `the page printed\n${graded.lines}\nthe command\n${lines}`);
-    const sheet = fs.readFileSync(path.join(scratch, "sheet.csv"), "utf8");
-    assert(graded.csv === sheet, `the page's sheet\n${graded.csv}\nthe command's\n${sheet}`);
-    assert(page.errors.length === 0, `the page reported errors: ${page.errors.join("; ")}`);
-    await page.close();
+    for (const [language, edition] of [["en", ""], ["fr", "fr/"]]) {
+      const sheet = `sheet-${language}.csv`;
+      const said = commandIn(scratch, "check", "--all", "class", "--lang", language, "--csv", sheet, "--quiet",
+        "--cache", path.join(scratch, "cache"));
+      assert(said.code === 1, `check --all --lang ${language}: exit ${said.code}\n${said.output}`);
+      const graded = await gradeInPage(browser, `${base}${edition}check.html`, klass);
+      assert(graded.state === "graded-differing", `the ${language} page says ${graded.state}: ${graded.report}`);
+      const lines = said.output.split("\n").filter((l) => /^(alice|bob|carol) /.test(l)).join("\n");
+      assert(graded.lines.trim() === lines, `the ${language} page printed\n${graded.lines}\nthe command\n${lines}`);
+      const written = fs.readFileSync(path.join(scratch, sheet), "utf8");
+      assert(graded.csv === written, `the ${language} page's sheet\n${graded.csv}\nthe command's\n${written}`);
+      assert(graded.errors.length === 0, `the ${language} page reported errors: ${graded.errors.join("; ")}`);
+    }
   });
   await test("the check page refuses a file that is not an image", async () => {
     const text = path.join(scratch, "notes.png");

@@ -85,7 +85,7 @@
     graded(message) {
       this.progress.hidden = true;
       this.lines.textContent += `${message.lines}\n`;
-      this.status.textContent = `${say("graded")} ${message.done} / ${message.count}`;
+      this.status.textContent = `${say("folders graded")}${french ? "\u00a0" : ""}: ${message.done} / ${message.count}`;
     }
 
     /** Every folder graded: the sheet, offered for download. */
