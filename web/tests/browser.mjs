@@ -513,6 +513,8 @@ async function access(browser, base) {
     const painted = await page.evaluate(() => window.painted);
     assert(shown.state === "done" && painted.length === 3, `${painted.length} bands painted: ${painted.join(" | ")}`);
     assert(painted.every((status) => !/refining/.test(status)), `painted while refining: ${painted.join(" | ")}`);
+    const sliding = await page.evaluate(() => getComputedStyle(document.querySelector(".sidebar")).transitionDuration);
+    assert(sliding.split(",").every((d) => parseFloat(d) === 0), `the sidebar still slides: ${sliding}`);
     await page.close();
   });
 }
