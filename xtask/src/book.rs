@@ -13,30 +13,73 @@ const TARGET: &str = "wasm32-unknown-unknown";
 /// WebAssembly's 128-bit SIMD, which the fast engine's portable lanes use (two
 /// `f64` or four `f32` to an instruction); every browser the book supports runs it.
 const SIMD: &str = "-C target-feature=+simd128";
-/// mdBook, its formula preprocessor and its translation tools (command, package,
-/// version), at the versions the book is built with.
-const MDBOOK: [(&str, &str, &str); 3] = [
-    ("mdbook", "mdbook", "0.5.4"),
-    ("mdbook-katex", "mdbook-katex", "0.10.0"),
-    ("mdbook-xgettext", "mdbook-i18n-helpers", "0.4.0"),
+/// A tool the book is built with, which cargo installs from crates.io.
+struct Tool<'a> {
+    /// The command it installs.
+    command: &'a str,
+    /// Its package.
+    package: &'a str,
+    /// The version the book is built with.
+    version: &'a str,
+    /// The features the book needs, `None` for the package's own defaults: fewer
+    /// features compile fewer crates (mdBook without its server and its watcher,
+    /// which `cargo xtask book --open` does not use; wasm-bindgen without TLS, as it
+    /// downloads nothing).
+    features: Option<&'a str>,
+}
+
+/// mdBook, its formula preprocessor and its translation tools, at the versions the
+/// book is built with.
+const MDBOOK: [Tool; 3] = [
+    Tool {
+        command: "mdbook",
+        package: "mdbook",
+        version: "0.5.4",
+        features: Some("search"),
+    },
+    Tool {
+        command: "mdbook-katex",
+        package: "mdbook-katex",
+        version: "0.10.0",
+        features: None,
+    },
+    Tool {
+        command: "mdbook-xgettext",
+        package: "mdbook-i18n-helpers",
+        version: "0.4.0",
+        features: None,
+    },
 ];
+
+/// How the tools are compiled, as cargo's settings for the release profile: without
+/// link-time optimisation (mdbook-katex asks for it, and it is most of its link)
+/// and at optimisation level 1, which compiles in less time than 3 and still builds
+/// both books in seconds.
+const TOOL_PROFILE: [(&str, &str); 3] = [
+    ("CARGO_PROFILE_RELEASE_LTO", "false"),
+    ("CARGO_PROFILE_RELEASE_OPT_LEVEL", "1"),
+    ("CARGO_PROFILE_RELEASE_CODEGEN_UNITS", "16"),
+];
+
 /// The book's translations, each with its title: `book/po/LANG.po`, built into
 /// `book/build/LANG/`.
 const LANGUAGES: [(&str, &str); 1] = [("fr", "raycourse : le lancer de rayons en sept séances")];
 
 /// Installs mdBook, its formula preprocessor and its translation tools where they are
-/// missing, at the versions the book is built with ([`MDBOOK`]).
-pub fn install_tools() -> Result<(), String> {
+/// missing, at the versions the book is built with ([`MDBOOK`]), all compiled in
+/// one target folder, `target/book-tools`, so that the crates they share compile
+/// once.
+pub fn install_tools(root: &Path) -> Result<(), String> {
     MDBOOK
         .iter()
-        .try_for_each(|(tool, package, version)| install_if_missing(tool, package, version))
+        .try_for_each(|tool| install_if_missing(root, tool))
 }
 
 /// Builds the live book; with `open`, serves it and opens it.
 pub fn build(root: &Path, open: bool) -> Result<(), String> {
     let wasm = compile(root)?;
     bindings(root, &wasm)?;
-    install_tools()?;
+    install_tools(root)?;
     let html = root.join("book/build");
     run(Command::new("mdbook").arg("build").arg(root.join("book")))?;
     for (language, title) in LANGUAGES {
@@ -137,7 +180,13 @@ fn debian_cargo() -> Result<Command, String> {
 /// the wasm-bindgen that `web/Cargo.toml` pins.
 fn bindings(root: &Path, wasm: &Path) -> Result<(), String> {
     let version = pinned_wasm_bindgen(root)?;
-    install_if_missing("wasm-bindgen", "wasm-bindgen-cli", &version)?;
+    let tool = Tool {
+        command: "wasm-bindgen",
+        package: "wasm-bindgen-cli",
+        version: &version,
+        features: Some(""),
+    };
+    install_if_missing(root, &tool)?;
     run(Command::new("wasm-bindgen")
         .args(["--target", "web", "--no-typescript", "--out-dir"])
         .arg(root.join("book/src/live/pkg"))
@@ -164,20 +213,32 @@ fn pinned_in(text: &str) -> Option<String> {
     version.strip_prefix('=').map(str::to_owned)
 }
 
-/// Installs `package` at `version` with cargo unless `tool --version` names it
+/// Installs `tool` with cargo unless its command's `--version` names its version
 /// (or, for a tool without `--version`, cargo lists it as installed).
-fn install_if_missing(tool: &str, package: &str, version: &str) -> Result<(), String> {
-    let found = Command::new(tool).arg("--version").output();
-    if found.is_ok_and(|out| String::from_utf8_lossy(&out.stdout).contains(version)) {
+fn install_if_missing(root: &Path, tool: &Tool) -> Result<(), String> {
+    let found = Command::new(tool.command).arg("--version").output();
+    if found.is_ok_and(|out| String::from_utf8_lossy(&out.stdout).contains(tool.version)) {
         return Ok(());
     }
     let listed = Command::new("cargo").args(["install", "--list"]).output();
-    let wanted = format!("{package} v{version}:");
+    let wanted = format!("{} v{}:", tool.package, tool.version);
     if listed.is_ok_and(|out| String::from_utf8_lossy(&out.stdout).contains(&wanted)) {
         return Ok(());
     }
-    println!("installing {package} {version} (once; a few minutes)");
-    run(Command::new("cargo").args(["install", package, "--version", version]))
+    println!(
+        "installing {} {} (once; a few minutes)",
+        tool.package, tool.version
+    );
+    let mut cargo = Command::new("cargo");
+    cargo
+        .args(["install", tool.package, "--version", tool.version])
+        .arg("--target-dir")
+        .arg(root.join("target/book-tools"))
+        .envs(TOOL_PROFILE);
+    if let Some(features) = tool.features {
+        cargo.args(["--no-default-features", "--features", features]);
+    }
+    run(&mut cargo)
 }
 
 /// Runs `command`, an error naming it if it fails.

@@ -90,7 +90,7 @@ fn run(args: &[String]) -> Result<(), String> {
         ["mdbook-formulas", mode] => formulas::preprocess(mode),
         ["book"] => book::build(&root(), false),
         ["book", "--open"] => book::build(&root(), true),
-        ["book-tools"] => book::install_tools(),
+        ["book-tools"] => book::install_tools(&root()),
         _ => Err(usage.into()),
     }
 }
