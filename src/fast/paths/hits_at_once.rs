@@ -2,7 +2,8 @@
 //! once on the lanes ([`RealSource`]): their records on spheres, their direct light
 //! (a point light and its shadow rays, or samples of a sphere light), and their
 //! bounces. Each is written once for any lanes in [`shading`], the
-//! course's functions step by step, so that every number is theirs to the last bit.
+//! course's functions step by step, so that every number is theirs to the last bit
+//! but the cosines and sines of the angles, taken on the lanes too.
 
 use crate::fast::paths::direct_at_once::{Direct, Towards};
 use crate::fast::paths::light_samples_at_once;
@@ -109,7 +110,8 @@ fn point_light_all<L: RealSource>(
 // ANCHOR: bounce_all
 /// Takes the paths on from their hits (`hits[k]` for `paths[k]`): keeps what each
 /// hit adds, and makes the next rays of those that bounce, all at once on
-/// `lanes`, each from its own path's random numbers.
+/// `lanes`, each from its own path's random numbers, the cosines and sines of their
+/// angles taken on the lanes too.
 #[inline(always)]
 pub(crate) fn bounce_all<L: RealSource>(lanes: L, paths: &mut [Path], hits: &[Shaded; PATHS]) {
     let mut samples = [None; PATHS];
@@ -125,8 +127,10 @@ pub(crate) fn bounce_all<L: RealSource>(lanes: L, paths: &mut [Path], hits: &[Sh
         return;
     };
     let any = samples.iter().flatten().next().copied().unwrap_or_default();
-    let samples_or_any = samples.map(|s| s.unwrap_or(any));
-    let (origin, direction) = bounces(lanes, bouncing.map(|h| *h), samples_or_any);
+    let [phi, u2] = [0, 1].map(|i| samples.map(|s| s.unwrap_or(any)[i]));
+    let (cos_phi, sin_phi) = shading::cos_sin(lanes, phi);
+    let with_angles = std::array::from_fn(|k| [cos_phi[k], sin_phi[k], u2[k]]);
+    let (origin, direction) = bounces(lanes, bouncing.map(|h| *h), with_angles);
     for (k, path) in paths.iter_mut().enumerate() {
         if samples[k].is_some() {
             path.ray = shading::ray(&origin, &direction, k);

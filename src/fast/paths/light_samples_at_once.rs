@@ -23,14 +23,15 @@ pub(crate) fn sphere_light_all<L: RealSource>(
     hits: &[Shaded; PATHS],
     light: &SphereLight,
 ) {
-    let mut samples = [[0.0; 3]; PATHS];
-    for ((path, hit), sample) in paths.iter_mut().zip(hits).zip(&mut samples) {
+    let (mut u1, mut phi) = ([0.0; PATHS], [0.0; PATHS]);
+    for (k, (path, hit)) in paths.iter_mut().zip(hits).enumerate() {
         if hit.is_some() {
-            let (u1, u2) = uniform_pair(&mut path.tracer.rng);
-            let phi = 2.0 * PI * u2;
-            *sample = [u1, phi.cos(), phi.sin()];
+            let (first, second) = uniform_pair(&mut path.tracer.rng);
+            (u1[k], phi[k]) = (first, 2.0 * PI * second);
         }
     }
+    let (cos_phi, sin_phi) = shading::cos_sin(lanes, phi);
+    let samples = std::array::from_fn(|k| [u1[k], cos_phi[k], sin_phi[k]]);
     let Some(shaded) = repeated(hits) else {
         return;
     };

@@ -165,11 +165,11 @@ impl<'s> Path<'s> {
     }
 
     /// The random numbers of a bounce, drawn as `Tracer::cosine_direction` draws
-    /// them, and the cosine and sine of its angle: `[cos phi, sin phi, u2]`.
-    pub(crate) fn bounce_sample(&mut self) -> [Real; 3] {
+    /// them, as its angle and its second number: `[phi, u2]`, `phi = 2 pi u1`, whose
+    /// cosine and sine are taken on the lanes for all the paths at once.
+    pub(crate) fn bounce_sample(&mut self) -> [Real; 2] {
         let (u1, u2) = uniform_pair(&mut self.tracer.rng);
-        let phi = 2.0 * PI * u1;
-        [phi.cos(), phi.sin(), u2]
+        [2.0 * PI * u1, u2]
     }
 
     /// The shadow ray of the last hit, if it has one.

@@ -15,8 +15,11 @@
 //! [`radiance`](crate::integrator::Tracer::radiance), in the same order, with its
 //! pixel's own random numbers: what each diffuse hit adds is kept (`fast::path`) and
 //! summed from the end of the path back to its start, as the recursion does when it
-//! returns. So each pixel gets the same value to the last bit, and the image the same
-//! bytes (a test renders every stage both ways). It models only what the rooms of
+//! returns. The one difference is the cosine and sine of each bounce's and light
+//! sample's angle, taken on the lanes
+//! ([`sin_cos`](crate::fast::simd::sin_cos::sin_cos)) within 2 units in the last
+//! place of the C library's: so each pixel gets the same value to within a few
+//! roundings, and the image the same bytes (a test renders every stage both ways). It models only what the rooms of
 //! the course need: diffuse spheres and, from session 5, meshes (a mesh is always
 //! diffuse; its triangles are searched one ray at a time, after the spheres, in
 //! `fast/meshes_at_once.rs`), a point or sphere light, bounce limit and Russian

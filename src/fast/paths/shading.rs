@@ -236,6 +236,19 @@ pub fn point_light<L: RealSource>(
     }
 }
 
+/// The cosines and sines of the angles `phi`, [`LANES`] at once
+/// ([`sin_cos`](crate::fast::simd::sin_cos::sin_cos)): within 2 units in the last
+/// place of the C library's, which the fast engine's promise allows (the same
+/// image, not the same last bits).
+#[inline(always)]
+pub(crate) fn cos_sin<L: RealSource>(
+    lanes: L,
+    phi: [Real; LANES],
+) -> ([Real; LANES], [Real; LANES]) {
+    let (sin, cos) = crate::fast::simd::sin_cos::sin_cos(lanes, lanes.gather(phi));
+    (cos.to_array(), sin.to_array())
+}
+
 /// The cosine-weighted bounces of [`LANES`] hits (normals facing their rays), on
 /// `lanes`: `sample_cosine_hemisphere` from each sample's `[cos phi, sin phi, u2]`,
 /// turned into the frame of the normal and spawned from the hit; the rays' origins

@@ -9,6 +9,7 @@
 //! | file | what it holds |
 //! |---|---|
 //! | [`real_lanes`] | four or eight `Real` numbers as one type ([`real_lanes::RealLanes`]), and the kinds of lanes that make them |
+//! | [`sin_cos`] | the sine and cosine of each lane, within 2 units in the last place of the C library's |
 //! | [`float_lanes`] | `f32` lanes as one type ([`float_lanes::FloatLanes`]), and where they are loaded from |
 //! | [`portable`] | the lanes of any processor: the `wide` crate's four `f64` or eight `f32`, and the hierarchy's eight `f32` as two halves of four |
 //! | `avx` | the proof that the processor has AVX, from which alone AVX's lanes are made |
@@ -27,3 +28,4 @@ pub mod avx_four;
 pub mod float_lanes;
 pub mod portable;
 pub mod real_lanes;
+pub mod sin_cos;
