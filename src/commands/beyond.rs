@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use raycourse::check::compare::same_picture;
 use raycourse::render::png::encode_rgb8;
 use raycourse::scene_file::beyond::{BeyondOverrides, load_with_beyond, stage_with_beyond};
 use raycourse::{Overrides, Render, Scene, Stage};
@@ -13,7 +14,6 @@ use crate::commands::failure::Failure;
 use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
 use crate::commands::output::{Timed, timed_render, write};
-use crate::commands::stage::render_stage;
 
 impl Job {
     /// The scene file at `path` with `overrides`, and the settings beyond the course
@@ -83,7 +83,8 @@ fn sample_map(taken: &[u32], scene: &Scene) -> Vec<u8> {
 }
 
 /// The last columns of `bench`'s row of `stage`: its time by the fast engine and the
-/// speed-up over the course's code (`course`), whose image it must give.
+/// speed-up over the course's code (`course`), whose picture it must show
+/// ([`same_picture`]).
 pub fn fast_columns(
     stage: &Stage,
     course: &Timed,
@@ -94,42 +95,35 @@ pub fn fast_columns(
         ..BeyondOverrides::default()
     };
     let (scene, beyond) = stage_with_beyond(stage, &Overrides::default(), &fast)?;
+    let (gamma, samples) = (scene.settings.gamma, scene.settings.samples);
     let fast = timed_render(stage.name, &Job { scene, beyond }, options)?;
-    if fast.result.film != course.result.film {
+    if !same_picture(&course.result.film, &fast.result.film, gamma, samples) {
         return Err(differs(stage));
     }
     let speed_up = course.seconds / fast.seconds;
     Ok(format!(" {:.2} s | {speed_up:.2}x |", fast.seconds))
 }
 
-/// Renders `stage` with `options` by the fast engine, beside `course` (the course's
-/// render), and fails unless the two files have the same bytes.
-pub fn same_bytes_by_the_fast_engine(
+/// Renders `stage` with `options` by the course's code and by the fast engine, and
+/// fails unless the two show the same picture ([`same_picture`]).
+pub fn same_picture_by_the_fast_engine(
     stage: &Stage,
-    options: RenderArgs,
-    course: &Path,
+    mut options: RenderArgs,
 ) -> Result<(), Failure> {
-    let fast = course.with_extension("fast.png");
-    let mut options = RenderArgs {
-        out: Some(fast.clone()),
-        ..options
-    };
+    let course = Job::of_stage(stage, &options.overrides(), &options)?;
     options.beyond.fast = true;
-    render_stage(stage, &options)?;
-    let read = |path: &Path| {
-        std::fs::read(path)
-            .map_err(|e| Failure::Machine(format!("{}: cannot read the file: {e}", path.display())))
-    };
-    let same = read(course)? == read(&fast)?;
-    std::fs::remove_file(&fast).map_err(|e| Failure::write(&fast, e))?;
-    match same {
+    let fast = Job::of_stage(stage, &options.overrides(), &options)?;
+    let settings = &course.scene.settings;
+    let by_course = timed_render(stage.name, &course, &options)?.result.film;
+    let by_fast = timed_render(stage.name, &fast, &options)?.result.film;
+    match same_picture(&by_course, &by_fast, settings.gamma, settings.samples) {
         true => Ok(()),
         false => Err(differs(stage)),
     }
 }
 
-/// The failure of a fast engine whose image of `stage` is not the course's: a bug
-/// of the machine, since the two must give the same bytes.
+/// The failure of a fast engine whose picture of `stage` is not the course's: a bug
+/// of the machine, since the two must show the same picture.
 fn differs(stage: &Stage) -> Failure {
     Failure::Machine(format!(
         "{}: the fast engine's image differs from the course's code's",

@@ -1,6 +1,6 @@
 //! `raycourse figures [dir]`: every stage of the build at the course's settings, by
 //! the course's code; beyond the course, with `--fast` by the fast engine too, to
-//! the same bytes.
+//! the same picture.
 
 use std::path::PathBuf;
 
@@ -20,8 +20,8 @@ struct FiguresArgs {
     /// The folder.
     #[arg(default_value = "book/src/figures")]
     dir: PathBuf,
-    /// Render each stage with the fast engine too, check that it gives the same
-    /// bytes, and print both closing lines.
+    /// Render each stage with the fast engine too and check that it shows the same
+    /// picture: the same bytes, or `check`'s "matches".
     #[cfg(feature = "beyond")]
     #[arg(long)]
     fast: bool,
@@ -41,16 +41,15 @@ inventory::submit! { VERB }
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = FiguresArgs::from_arg_matches(matches)?;
     stages().try_for_each(|stage| {
-        let out = args.dir.join(format!("{}.png", stage.name));
         let options = RenderArgs {
-            out: Some(out.clone()),
+            out: Some(args.dir.join(format!("{}.png", stage.name))),
             work: args.work.clone(),
             ..RenderArgs::default()
         };
         render_stage(stage, &options)?;
         #[cfg(feature = "beyond")]
         if args.fast {
-            crate::commands::beyond::same_bytes_by_the_fast_engine(stage, options, &out)?;
+            crate::commands::beyond::same_picture_by_the_fast_engine(stage, options)?;
         }
         Ok(())
     })

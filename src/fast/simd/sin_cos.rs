@@ -76,10 +76,12 @@ const COSINE: [Real; 6] = [
 #[cfg(feature = "f32")]
 const COSINE: [Real; 3] = [2.4433157e-5, -1.3887316e-3, 4.1666646e-2];
 
+// ANCHOR: sin_cos
 /// `(sin x, cos x)` lane by lane, within 2 units in the last place of the C
 /// library's for `|x| <= 256` (the module's bound).
 #[inline(always)]
 pub fn sin_cos<L: RealSource>(lanes: L, x: L::Wide) -> (L::Wide, L::Wide) {
+    // k, the integer nearest x / (pi/2), is also in the lowest bits of `shifted`.
     let shifted = x * lanes.splat(TWO_OVER_PI) + lanes.splat(ROUNDER);
     let k = shifted - lanes.splat(ROUNDER);
     let mut r = x;
@@ -88,10 +90,12 @@ pub fn sin_cos<L: RealSource>(lanes: L, x: L::Wide) -> (L::Wide, L::Wide) {
     }
     let z = r * r;
     let sin_r = r + r * z * polynomial(lanes, &SINE, z);
+    // cos r = 1 - z/2 + z^2 Q(z), with what rounding 1 - z/2 lost added back.
     let half_z = lanes.splat(0.5) * z;
     let one = lanes.splat(1.0);
     let w = one - half_z;
     let cos_r = w + (((one - w) - half_z) + z * z * polynomial(lanes, &COSINE, z));
+    // q = k mod 4, from k's two lowest bits.
     let zero = lanes.splat(0.0);
     let odd = (shifted & lanes.splat(Real::from_bits(1))).ne(zero);
     let past_half_turn = (shifted & lanes.splat(Real::from_bits(2))).ne(zero);
@@ -100,6 +104,7 @@ pub fn sin_cos<L: RealSource>(lanes: L, x: L::Wide) -> (L::Wide, L::Wide) {
     let cos = past_half_turn.select(-cos, cos);
     (sin, odd.select(-cos, cos))
 }
+// ANCHOR_END: sin_cos
 
 /// `c[0] z^(n-1) + c[1] z^(n-2) + ... + c[n-1]`, by Horner's rule.
 #[inline(always)]
