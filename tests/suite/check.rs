@@ -624,8 +624,9 @@ fn ppm_images_are_checked_like_png_ones() {
     );
 }
 
-/// `check` speaks French where the locale is French, and `--lang` overrides the
-/// locale; the verdict and the exit code are the same in both languages.
+/// `check` speaks French where the locale is French, with French decimal commas,
+/// and `--lang` overrides the locale; the verdict and the exit code are the same in
+/// both languages.
 #[test]
 fn the_report_follows_the_locale_or_lang() {
     let dir = tempfile::tempdir().unwrap();
@@ -645,6 +646,7 @@ fn the_report_follows_the_locale_or_lang() {
     assert!(french.contains("  où\u{a0}: "), "{french}");
     let hint = "  indice (pas de gamma)\u{a0}: l'image semble affichée sans correction gamma";
     assert!(french.contains(hint), "{french}");
+    assert!(french.contains("min(255, L^(1/2,2))"), "a decimal comma: {french}");
     let english = check("fr_FR.UTF-8", &["--lang", "en"]);
     assert!(
         english.contains("  hint (no gamma): the image looks displayed"),

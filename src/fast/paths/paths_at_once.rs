@@ -19,11 +19,12 @@
 //! sample's angle, taken on the lanes
 //! ([`sin_cos`](crate::fast::simd::sin_cos::sin_cos)) within 2 units in the last
 //! place of the C library's: so each pixel gets the same value to within a few
-//! roundings, and the image the same bytes (a test renders every stage both ways). It models only what the rooms of
-//! the course need: diffuse spheres and, from session 5, meshes (a mesh is always
-//! diffuse; its triangles are searched one ray at a time, after the spheres, in
-//! `fast/meshes_at_once.rs`), a point or sphere light, bounce limit and Russian
-//! roulette; any other scene takes the course's recursion.
+//! roundings, and the image the same bytes (a test renders every stage both ways).
+//! It models only what the rooms of the course need: diffuse spheres and, from
+//! session 5, meshes (a mesh is always diffuse; its triangles are searched one ray
+//! at a time, after the spheres, in `fast/meshes_at_once.rs`), a point or sphere
+//! light, bounce limit and Russian roulette; any other scene takes the course's
+//! recursion.
 //!
 //! [`SphereLanes::nearest_of_each`]: crate::fast::paths::sphere_lanes::SphereLanes::nearest_of_each
 
