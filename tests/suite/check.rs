@@ -646,7 +646,10 @@ fn the_report_follows_the_locale_or_lang() {
     assert!(french.contains("  où\u{a0}: "), "{french}");
     let hint = "  indice (pas de gamma)\u{a0}: l'image semble affichée sans correction gamma";
     assert!(french.contains(hint), "{french}");
-    assert!(french.contains("min(255, L^(1/2,2))"), "a decimal comma: {french}");
+    assert!(
+        french.contains("min(255, L^(1/2,2))"),
+        "a decimal comma: {french}"
+    );
     let english = check("fr_FR.UTF-8", &["--lang", "en"]);
     assert!(
         english.contains("  hint (no gamma): the image looks displayed"),
