@@ -21,10 +21,10 @@ struct Tool<'a> {
     package: &'a str,
     /// The version the book is built with.
     version: &'a str,
-    /// The features the book needs, `None` for the package's own defaults: fewer
-    /// features compile fewer crates (mdBook without its server and its watcher,
-    /// which `cargo xtask book --open` does not use; wasm-bindgen without TLS, as it
-    /// downloads nothing).
+    /// The features the book needs (`Some("")`: none), `None` for the package's own
+    /// defaults: fewer features compile fewer crates (mdBook without its server and
+    /// its watcher, which `cargo xtask book --open` does not use; wasm-bindgen
+    /// without TLS, as it downloads nothing).
     features: Option<&'a str>,
 }
 
@@ -55,10 +55,9 @@ const MDBOOK: [Tool; 3] = [
 /// link-time optimisation (mdbook-katex asks for it, and it is most of its link)
 /// and at optimisation level 1, which compiles in less time than 3 and still builds
 /// both books in seconds.
-const TOOL_PROFILE: [(&str, &str); 3] = [
+const TOOL_PROFILE: [(&str, &str); 2] = [
     ("CARGO_PROFILE_RELEASE_LTO", "false"),
     ("CARGO_PROFILE_RELEASE_OPT_LEVEL", "1"),
-    ("CARGO_PROFILE_RELEASE_CODEGEN_UNITS", "16"),
 ];
 
 /// The book's translations, each with its title: `book/po/LANG.po`, built into

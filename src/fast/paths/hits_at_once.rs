@@ -127,8 +127,9 @@ pub(crate) fn bounce_all<L: RealSource>(lanes: L, paths: &mut [Path], hits: &[Sh
         return;
     };
     let any = samples.iter().flatten().next().copied().unwrap_or_default();
-    let [phi, u2] = [0, 1].map(|i| samples.map(|s| s.unwrap_or(any)[i]));
-    let (cos_phi, sin_phi) = shading::cos_sin(lanes, phi);
+    let rows = samples.map(|s| s.unwrap_or(any));
+    let (cos_phi, sin_phi) = shading::cos_sin(lanes, rows.map(|[phi, _]| phi));
+    let u2 = rows.map(|[_, u2]| u2);
     let with_angles = std::array::from_fn(|k| [cos_phi[k], sin_phi[k], u2[k]]);
     let (origin, direction) = bounces(lanes, bouncing.map(|h| *h), with_angles);
     for (k, path) in paths.iter_mut().enumerate() {
