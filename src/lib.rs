@@ -45,6 +45,7 @@
 //! | `engines` | beyond the course: which engine renders a scene | `beyond` |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
 //! | `studies` | beyond the course: error against samples and time, scale sweeps, ray sets | `beyond` |
+//! | [`messages`] | what the program says, in English or French, from one catalogue of messages | 1 |
 //! | [`check`] | an image against the stage's: the comparison (1), a student's image graded with the likely mistake (7) | 1, 7 |
 //! | [`inspect`] | one pixel's path ray by ray; images of normals, depth, objects and cost | 1 |
 //!
@@ -103,6 +104,8 @@ pub mod scene_file;
 
 #[cfg(feature = "beyond")]
 pub mod studies;
+
+pub mod messages;
 
 pub mod check;
 

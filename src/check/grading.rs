@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 
 use image::RgbImage;
 
-use crate::check::language::Language;
 use crate::check::report::{Report, Verdict};
+use crate::messages::language::Language;
 use crate::scene_file::{Stage, stages};
 
 /// A stage's grade in a student's folder.
@@ -46,7 +46,7 @@ impl Grade {
             Grade::Unreadable(why) => why.clone(),
             Grade::Checked(report) => report
                 .hint
-                .map_or(String::new(), |m| m.words(language)[0].to_owned()),
+                .map_or(String::new(), |m| m.words(language)[0].clone()),
         }
     }
 

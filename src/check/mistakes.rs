@@ -5,23 +5,22 @@ use image::RgbImage;
 
 use crate::check::compare::{Linear, compare_blocks, compare_pixels, displayed};
 use crate::check::expected::{Expected, Source};
-use crate::check::language::Language;
 use crate::lights::Light;
 use crate::materials::Material;
 use crate::maths::{PI, Real};
 use crate::meshes::MeshAlbedo;
+use crate::messages::language::Language;
+use crate::messages::say;
 use crate::render::Film;
 use crate::scene_file::SceneError;
 
 /// A classic mistake: what it is called and what to look for.
 #[derive(Debug)]
 pub struct Mistake {
-    /// A short name, for tables.
-    pub name: &'static str,
-    /// What to check in one's own code.
-    pub hint: &'static str,
-    /// The name and the hint in French (`check --lang fr`).
-    pub french: [&'static str; 2],
+    /// Its id in the catalogue (`messages/`), whose message `mistake-<id>` is its
+    /// short name, for tables, and whose attribute `.hint` says what to check in
+    /// one's own code.
+    pub id: &'static str,
     /// The image the mistake makes of the stage, as a film read like the student's
     /// (`None` when the mistake cannot happen in this stage).
     image: fn(&Candidates) -> Result<Option<Film>, SceneError>,
@@ -46,172 +45,88 @@ pub struct Candidates<'a> {
 /// Every mistake the checker recognises.
 pub const MISTAKES: &[Mistake] = &[
     Mistake {
-        name: "no gamma",
-        hint: "the image looks displayed without gamma correction: write min(255, L^(1/2.2)), not min(255, L)",
-        french: [
-            "pas de gamma",
-            "l'image semble affichée sans correction gamma : écrivez min(255, L^(1/2,2)), et non min(255, L)",
-        ],
+        id: "no-gamma",
         image: |c| {
             Ok(c.gamma_applies()
                 .then(|| c.map(|l, g| l.min(255.0).powf(g))))
         },
     },
     Mistake {
-        name: "gamma twice",
-        hint: "the image looks gamma-corrected twice: apply L^(1/2.2) once, when writing the pixel",
-        french: [
-            "gamma deux fois",
-            "l'image semble corrigée deux fois du gamma : appliquez L^(1/2,2) une seule fois, en écrivant le pixel",
-        ],
+        id: "gamma-twice",
         image: |c| Ok(c.gamma_applies().then(|| c.map(|l, g| l.powf(1.0 / g)))),
     },
     Mistake {
-        name: "1/pi missing",
-        hint: "the image is about pi times too bright: the diffuse BRDF is albedo / pi; check the 1/pi, and that the light's intensity is used as given",
-        french: [
-            "1/pi manquant",
-            "l'image est environ pi fois trop claire : la BRDF diffuse vaut albédo / pi ; vérifiez le 1/pi, et que l'intensité de la source est prise telle quelle",
-        ],
+        id: "one-over-pi-missing",
         image: |c| Ok(Some(c.map(|l, _| l * std::f64::consts::PI))),
     },
     Mistake {
-        name: "1/pi twice",
-        hint: "the image is about pi times too dark: the diffuse BRDF's 1/pi is counted twice",
-        french: [
-            "1/pi deux fois",
-            "l'image est environ pi fois trop sombre : le 1/pi de la BRDF diffuse est compté deux fois",
-        ],
+        id: "one-over-pi-twice",
         image: |c| Ok(Some(c.map(|l, _| l / std::f64::consts::PI))),
     },
     Mistake {
-        name: "no falloff",
-        hint: "the light does not fall off with distance: a point light gives I / (4 pi d^2), d the distance to the light",
-        french: [
-            "pas de décroissance",
-            "la lumière ne décroît pas avec la distance : une source ponctuelle donne I / (4 pi d^2), d étant la distance à la source",
-        ],
+        id: "no-falloff",
         image: no_falloff,
     },
     Mistake {
-        name: "upside down",
-        hint: "the image is upside down: image rows go from the top, so row i counts from the bottom as H - 1 - row",
-        french: [
-            "à l'envers",
-            "l'image est à l'envers : les lignes de l'image partent du haut, donc la ligne i, comptée depuis le bas, est H - 1 - ligne",
-        ],
+        id: "upside-down",
         image: |c| Ok(Some(c.flipped(true))),
     },
     Mistake {
-        name: "mirrored",
-        hint: "the image is mirrored left to right: the camera's x axis points right (check the sign of x in the pixel's direction)",
-        french: [
-            "en miroir",
-            "l'image est inversée de gauche à droite : l'axe x de la caméra pointe vers la droite (vérifiez le signe de x dans la direction du pixel)",
-        ],
+        id: "mirrored",
         image: |c| Ok(Some(c.flipped(false))),
     },
     Mistake {
-        name: "half a turn",
-        hint: "the image is turned half a turn: both the rows and the columns run the wrong way (row i counts from the bottom as H - 1 - row, and x grows with the column j)",
-        french: [
-            "un demi-tour",
-            "l'image a fait un demi-tour\u{a0}: les lignes et les colonnes vont toutes deux dans le mauvais sens (la ligne i, comptée depuis le bas, est H - 1 - ligne, et x croît avec la colonne j)",
-        ],
+        id: "half-a-turn",
         image: |c| Ok(Some(c.moved(|x, y, w, h| (w - 1 - x, h - 1 - y)))),
     },
     Mistake {
-        name: "rows and columns swapped",
-        hint: "rows and columns are swapped: the pixel of column j and row i is written at column i and row j (a pixel's index in the image is row * W + column)",
-        french: [
-            "lignes et colonnes échangées",
-            "les lignes et les colonnes sont échangées\u{a0}: le pixel de la colonne j et de la ligne i est écrit à la colonne i et à la ligne j (l'indice d'un pixel dans l'image est ligne * W + colonne)",
-        ],
+        id: "rows-and-columns-swapped",
         image: |c| Ok((c.film.width == c.film.height).then(|| c.moved(|x, y, _, _| (y, x)))),
     },
     Mistake {
-        name: "shifted a pixel",
-        hint: "the image is the stage's moved by one pixel: row i counts from the bottom as H - 1 - row (not H - row), and a pixel's centre is half a pixel in, x = j - W/2 + 0.5",
-        french: [
-            "décalée d'un pixel",
-            "l'image est celle de l'étape décalée d'un pixel\u{a0}: la ligne i, comptée depuis le bas, est H - 1 - ligne (et non H - ligne), et le centre d'un pixel est à un demi-pixel du bord, x = j - W/2 + 0,5",
-        ],
+        id: "shifted-a-pixel",
         image: |c| Ok(Some(c.shifted())),
     },
     Mistake {
-        name: "shadow acne",
-        hint: "lit surfaces are speckled with dark dots (shadow acne): start shadow rays a little off the surface, P + epsilon N, not at P",
-        french: [
-            "acné d'ombre",
-            "les surfaces éclairées sont mouchetées de points sombres (acné d'ombre) : faites partir les rayons d'ombre un peu au-dessus de la surface, de P + epsilon N et non de P",
-        ],
+        id: "shadow-acne",
         image: acne,
     },
     Mistake {
-        name: "inverted index",
-        hint: "the glass bends rays the wrong way: going into glass, eta = n1 / n2 = 1 / 1.5; coming out, 1.5",
-        french: [
-            "indice inversé",
-            "le verre dévie les rayons dans le mauvais sens : en entrant dans le verre, eta = n1 / n2 = 1 / 1,5 ; en sortant, 1,5",
-        ],
+        id: "inverted-index",
         image: inverted_index,
     },
     Mistake {
-        name: "light counted twice",
-        hint: "the light is counted twice: with light sampling, a bounced ray that meets the light must not add its emission again",
-        french: [
-            "source comptée deux fois",
-            "la lumière est comptée deux fois : avec l'échantillonnage de la lumière, un rayon rebondi qui rencontre la source ne doit pas ajouter son émission une seconde fois",
-        ],
+        id: "light-counted-twice",
         image: light_twice,
     },
     Mistake {
-        name: "bounce limit",
-        hint: "the paths stop too early: a path follows up to `bounces` bounces (the stage's setting), and only then stops; check where your bounce counter is tested and decremented",
-        french: [
-            "limite de rebonds",
-            "les chemins s'arrêtent trop tôt : un chemin suit jusqu'à `bounces` rebonds (le réglage de l'étape), et ne s'arrête qu'ensuite ; vérifiez où votre compteur de rebonds est testé et décrémenté",
-        ],
+        id: "bounce-limit",
         image: one_bounce,
     },
     Mistake {
-        name: "bounce weight",
-        hint: "the indirect light is off while the direct light is right: the weight of a bounce must match how its direction was drawn (cosine-weighted directions: albedo; uniform ones: 2 albedo cos(theta))",
-        french: [
-            "poids du rebond",
-            "la lumière indirecte est fausse alors que la lumière directe est juste : le poids d'un rebond doit correspondre à la façon dont sa direction a été tirée (directions pondérées par le cosinus : albédo ; uniformes : 2 albédo cos(theta))",
-        ],
+        id: "bounce-weight",
         image: bounce_weight,
     },
     Mistake {
-        name: "texture gamma",
-        hint: "the texture looks washed out: texel values are gamma-encoded; use (v / 255)^2.2 as the albedo",
-        french: [
-            "gamma de la texture",
-            "la texture paraît délavée : les valeurs des texels sont encodées en gamma ; prenez (v / 255)^2.2 comme albédo",
-        ],
+        id: "texture-gamma",
         image: |c| {
             c.textured(|texel| image::Rgb(texel.0.map(|v| 255.0 * (v / 255.0).powf(1.0 / 2.2))))
         },
     },
     Mistake {
-        name: "texture v flipped",
-        hint: "the texture is upside down on the mesh: v runs from the bottom of the picture, so the texel row is (1 - v) H",
-        french: [
-            "v de texture inversé",
-            "la texture est à l'envers sur le maillage : v part du bas de l'image, donc la ligne du texel est (1 - v) H",
-        ],
+        id: "texture-v-flipped",
         image: |c| c.textured(|texture| texture),
     },
 ];
 
 impl Mistake {
     /// The name and the hint in `language`.
-    pub fn words(&self, language: Language) -> [&'static str; 2] {
-        match language {
-            Language::English => [self.name, self.hint],
-            Language::French => self.french,
-        }
+    pub fn words(&self, language: Language) -> [String; 2] {
+        let id = format!("mistake-{}", self.id);
+        [
+            say(language, &id, &[]),
+            say(language, &format!("{id}.hint"), &[]),
+        ]
     }
 }
 

@@ -11,7 +11,6 @@
 //! | [`regions`] | which object each pixel shows, to say where the differences are |
 //! | [`mistakes`] | the classic mistakes, each as the image it would make |
 //! | [`report`] | the verdict, the figures behind it and the hint |
-//! | [`language`] | English or French, as the locale or `--lang` asks (the checklist's too) |
 //! | [`wording`] | the report in words, as `check` prints it |
 //! | [`grading`] | a student's folder or a class graded, and the grading sheet |
 
@@ -20,7 +19,6 @@ pub mod compare;
 pub mod expected;
 #[cfg(feature = "s7")]
 pub mod grading;
-pub mod language;
 #[cfg(feature = "s7")]
 pub mod mistakes;
 #[cfg(feature = "s7")]

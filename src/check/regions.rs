@@ -3,42 +3,43 @@
 use crate::lights::Light;
 use crate::scene::Scene;
 
-/// The name of the object the camera ray through each pixel meets first, row-major
-/// from the top: "the floor", "the left wall", "the light", "the sphere", "the
-/// mesh", or "the background" where the ray meets nothing.
+/// The place of the image that each pixel shows: the object the camera ray through
+/// it meets first, row-major from the top, named as the catalogue names places
+/// (`place-floor` is "floor"): "floor", "left-wall", "light", "sphere", "mesh",
+/// or "background" where the ray meets nothing.
 pub fn object_names(scene: &Scene) -> Vec<&'static str> {
     let camera = scene.camera;
     (0..camera.height)
         .flat_map(|row| (0..camera.width).map(move |column| (row, column)))
         .map(|(row, column)| {
             let hit = scene.intersect(&camera.ray(row, column));
-            hit.map_or("the background", |hit| name(scene, hit.object))
+            hit.map_or("background", |hit| name(scene, hit.object))
         })
         .collect()
 }
 
-/// The name of object `object` of `scene`.
+/// The place name of object `object` of `scene`.
 fn name(scene: &Scene, object: usize) -> &'static str {
     if matches!(scene.light, Some(Light::Sphere(l)) if l.object == object) {
-        return "the light";
+        return "light";
     }
     let Some(sphere) = scene.spheres.get(object) else {
-        return "the mesh";
+        return "mesh";
     };
     if sphere.radius < 100.0 {
-        return "the sphere";
+        return "sphere";
     }
     let c = sphere.centre.normalize();
     let walls = [
-        (-c.y, "the floor"),
-        (c.y, "the ceiling"),
-        (-c.x, "the left wall"),
-        (c.x, "the right wall"),
-        (-c.z, "the back wall"),
-        (c.z, "the wall behind the camera"),
+        (-c.y, "floor"),
+        (c.y, "ceiling"),
+        (-c.x, "left-wall"),
+        (c.x, "right-wall"),
+        (-c.z, "back-wall"),
+        (c.z, "wall-behind-camera"),
     ];
     walls
         .into_iter()
         .max_by(|a, b| a.0.total_cmp(&b.0))
-        .map_or("a wall", |w| w.1)
+        .map_or("wall", |w| w.1)
 }

@@ -77,7 +77,7 @@ pub fn check(source: &Source, image: &RgbImage, lossy: bool) -> Result<Report, S
         Verdict::Matches
     };
     let hint = match verdict {
-        Verdict::Differs if moved => MISTAKES.iter().find(|m| m.name == "shifted a pixel"),
+        Verdict::Differs if moved => MISTAKES.iter().find(|m| m.id == "shifted-a-pixel"),
         Verdict::Differs => best_explanation(&candidates, outcome.share())?,
         Verdict::Matches => None,
     };
@@ -147,9 +147,9 @@ fn regions(expected: &Expected, outcome: &Outcome) -> Vec<(String, f64)> {
             cy * outcome.cell + outcome.cell / 2,
         );
         let half = if y < camera.height / 2 {
-            "the top half"
+            "top-half"
         } else {
-            "the bottom half"
+            "bottom-half"
         };
         for name in [names[(y * camera.width + x) as usize], half] {
             match tally.iter_mut().find(|t| t.0 == name) {

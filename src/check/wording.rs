@@ -1,8 +1,10 @@
 //! What the checker says: a report as the lines `raycourse check` prints, which the
-//! book's check page shows too, in English or in French.
+//! book's check page shows too, in the reader's language. The sentences are the
+//! catalogue's (`messages/*/check.ftl`); this chooses which, with what figures.
 
-use crate::check::language::Language;
 use crate::check::report::{Report, Verdict};
+use crate::messages::language::Language;
+use crate::messages::say;
 use crate::scene_file::Stage;
 
 impl Report {
@@ -10,37 +12,32 @@ impl Report {
     /// of pixels (or blocks) that differ, the brightness ratio per channel, where it
     /// differs, for a Monte Carlo stage the noise against the course's, and the hint.
     pub fn lines(&self, stage: &Stage, language: Language) -> Vec<String> {
-        let say = |english, french| language.pick(english, french);
-        let unit = if self.outcome.cell == 1 {
-            say("pixels", "des pixels")
-        } else {
-            say("blocks of 8 x 8 pixels", "des blocs de 8 × 8 pixels")
+        let verdict = match self.verdict {
+            Verdict::Matches => "check-matches",
+            Verdict::Differs => "check-differs",
         };
-        let share = language.number(100.0 * self.outcome.share(), 1);
-        let name = stage.name;
-        let mut lines = vec![match (self.verdict, language) {
-            (Verdict::Matches, Language::English) => {
-                format!("{name}: matches ({share}% of {unit} differ, within what is allowed)")
-            }
-            (Verdict::Matches, Language::French) => format!(
-                "{name}\u{a0}: correspond ({share}\u{a0}% {unit} diffèrent, dans la tolérance)"
+        let share = 100.0 * self.outcome.share();
+        let [red, green, blue] = self.ratio;
+        let mut lines = vec![
+            say(
+                language,
+                verdict,
+                &[
+                    ("stage", stage.name.into()),
+                    ("share", share.into()),
+                    ("cell", self.outcome.cell.into()),
+                ],
             ),
-            (Verdict::Differs, Language::English) => {
-                format!("{name}: differs ({share}% of {unit} differ)")
-            }
-            (Verdict::Differs, Language::French) => {
-                format!("{name}\u{a0}: diffère ({share}\u{a0}% {unit} diffèrent)")
-            }
-        }];
-        let [r, g, b] = self.ratio.map(|x| language.number(x, 2));
-        lines.push(match language {
-            Language::English => {
-                format!("  brightness against the reference: red x{r}, green x{g}, blue x{b}")
-            }
-            Language::French => format!(
-                "  luminosité par rapport à la référence\u{a0}: rouge ×\u{a0}{r}, vert ×\u{a0}{g}, bleu ×\u{a0}{b}"
+            say(
+                language,
+                "check-brightness",
+                &[
+                    ("red", red.into()),
+                    ("green", green.into()),
+                    ("blue", blue.into()),
+                ],
             ),
-        });
+        ];
         lines.extend(self.where_line(language));
         lines.extend(self.noise_line(language));
         lines.extend(self.hint_line(stage, language));
@@ -57,75 +54,54 @@ impl Report {
             .regions
             .iter()
             .take(5)
-            .map(|(name, s)| {
-                let share = language.number(100.0 * s, 0);
-                match language {
-                    Language::English => format!("{name} ({share}%)"),
-                    Language::French => format!("{} ({share}\u{a0}%)", french_place(name)),
-                }
+            .map(|(place, share)| {
+                let place = say(language, &format!("place-{place}"), &[]);
+                let share = 100.0 * share;
+                say(
+                    language,
+                    "check-place",
+                    &[("place", place.into()), ("share", share.into())],
+                )
             })
             .collect();
-        let label = language.pick("  where: ", "  où\u{a0}: ");
-        Some(format!("{label}{}", places.join(", ")))
+        let places = places.join(&say(language, "check-place-separator", &[]));
+        Some(say(language, "check-where", &[("places", places.into())]))
     }
 
     /// For a matching Monte Carlo image, its noise against a render at the course's
     /// samples, and the samples it seems to have.
     fn noise_line(&self, language: Language) -> Option<String> {
         let (ratio, samples) = self.noise.filter(|_| self.verdict == Verdict::Matches)?;
-        let equivalent = language.number((f64::from(samples) / ratio.max(1e-9)).min(1e6), 0);
-        let ratio = language.number(ratio, 2);
-        Some(match language {
-            Language::English => format!(
-                "  noise: {ratio} times the variance of a render at the course's {samples} samples per pixel (as from about {equivalent} samples)"
-            ),
-            Language::French => format!(
-                "  bruit\u{a0}: {ratio} fois la variance d'un rendu aux {samples} échantillons par pixel du cours (comme avec environ {equivalent} échantillons)"
-            ),
-        })
+        let equivalent = (f64::from(samples) / ratio.max(1e-9)).min(1e6);
+        let arguments = [
+            ("ratio", ratio.into()),
+            ("samples", samples.into()),
+            ("equivalent", equivalent.into()),
+        ];
+        Some(say(language, "check-noise", &arguments))
     }
 
     /// The hint: the classic mistake that explains the difference, or where to look
     /// when none does.
     fn hint_line(&self, stage: &Stage, language: Language) -> Option<String> {
-        let command = format!(
-            "raycourse s{} {} --out reference.png",
-            stage.session, stage.name
-        );
-        match (self.hint, language) {
-            (Some(mistake), _) => {
+        match self.hint {
+            Some(mistake) => {
                 let [name, hint] = mistake.words(language);
-                let label = language.pick("hint", "indice");
-                let colon = language.pick(":", "\u{a0}:");
-                Some(format!("  {label} ({name}){colon} {hint}"))
+                let arguments = [("name", name.into()), ("hint", hint.into())];
+                Some(say(language, "check-hint", &arguments))
             }
-            (None, _) if self.verdict == Verdict::Matches => None,
-            (None, Language::English) => Some(format!(
-                "  hint: no classic mistake explains the difference; compare with `{command}`"
-            )),
-            (None, Language::French) => Some(format!(
-                "  indice\u{a0}: aucune erreur classique n'explique la différence\u{a0}; comparez avec `{command}`"
-            )),
+            None if self.verdict == Verdict::Matches => None,
+            None => {
+                let command = format!(
+                    "raycourse s{} {} --out reference.png",
+                    stage.session, stage.name
+                );
+                Some(say(
+                    language,
+                    "check-no-hint",
+                    &[("command", command.into())],
+                ))
+            }
         }
-    }
-}
-
-/// A place of the image, as `regions` names it in English, in French.
-fn french_place(name: &str) -> &str {
-    match name {
-        "the background" => "le fond",
-        "the light" => "la source",
-        "the mesh" => "le maillage",
-        "the sphere" => "la sphère",
-        "the floor" => "le sol",
-        "the ceiling" => "le plafond",
-        "the left wall" => "le mur de gauche",
-        "the right wall" => "le mur de droite",
-        "the back wall" => "le mur du fond",
-        "the wall behind the camera" => "le mur derrière la caméra",
-        "a wall" => "un mur",
-        "the top half" => "la moitié haute",
-        "the bottom half" => "la moitié basse",
-        other => other,
     }
 }

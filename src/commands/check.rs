@@ -13,8 +13,8 @@ use raycourse::check::grading::{
     Grade, ON_DISK, class_sheet, decode, folder_lines, folder_sheet, grade_folder,
     image_of_any_stage, lossy, student_line, students,
 };
-use raycourse::check::language::Language;
 use raycourse::check::report::{Report, Verdict, check};
+use raycourse::messages::language::Language;
 use raycourse::render::cache::Folder;
 use raycourse::{Stage, stages};
 

@@ -22,7 +22,7 @@ use crate::commands::failure::Failure;
 use crate::commands::options::WorkArgs;
 use crate::commands::output::{progress_bar, write};
 use crate::commands::plot::plot_rungs;
-use raycourse::check::language::Language;
+use raycourse::messages::language::Language;
 
 /// Measure how fast a stage's error falls: render a reference (cached), then the
 /// sample counts 1, 2, 4, ... up to `--max-spp`, timing each and measuring its

@@ -8,8 +8,8 @@ use std::sync::Once;
 use clap::{ArgMatches, FromArgMatches, Parser};
 use plotters::prelude::*;
 use plotters::style::FontStyle;
-use raycourse::check::language::Language;
 use raycourse::maths::to_double;
+use raycourse::messages::language::Language;
 use raycourse::render::png::encode_rgb8;
 use raycourse::studies::convergence::{Rung, axis_label, read_rungs};
 

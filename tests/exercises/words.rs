@@ -3,7 +3,7 @@
 
 use std::sync::OnceLock;
 
-use raycourse::check::language::Language;
+use raycourse::messages::language::Language;
 
 /// The language chosen once, at the start of the run.
 static LANGUAGE: OnceLock<Language> = OnceLock::new();

@@ -15,6 +15,7 @@ use raycourse::integrator::Tracer;
 use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::maths::{Colour, PI, Real, pixel_rng};
+use raycourse::messages::language::Language;
 use raycourse::render::cache::Folder;
 use raycourse::render::film::display;
 use raycourse::{Overrides, Scene, Stage, encode_png, stages};
@@ -211,9 +212,11 @@ fn monte_carlo_stages_pass_with_any_seed_and_fewer_samples() {
     );
 }
 
-/// Whether `report` says the image differs, with the hint of mistake `name`.
+/// Whether `report` says the image differs, with the hint of the mistake whose
+/// English name is `name`.
 fn caught(report: &Report, name: &str) -> bool {
-    report.verdict == Verdict::Differs && report.hint.map(|m| m.name) == Some(name)
+    let named = report.hint.map(|m| m.words(Language::English)[0].clone());
+    report.verdict == Verdict::Differs && named.as_deref() == Some(name)
 }
 
 /// A texture made from Spot's by `change` of each 8-bit channel value, written in

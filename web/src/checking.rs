@@ -3,8 +3,9 @@
 //! code as the command's. Nothing leaves the page.
 
 use raycourse::check::expected::Source;
-use raycourse::check::language::Language;
 use raycourse::check::report::{Verdict, check};
+use raycourse::messages::language::Language;
+use raycourse::messages::say;
 use raycourse::render::cache::InMemory;
 use wasm_bindgen::prelude::*;
 
@@ -71,11 +72,11 @@ pub fn checked(
     let lossy = format == Some(image::ImageFormat::Jpeg);
     let image = image::load_from_memory(file)
         .map_err(|e| {
-            let what = language.pick(
-                "not a PNG, JPEG or PPM image that can be read",
-                "ce n'est pas une image PNG, JPEG ou PPM lisible",
-            );
-            format!("{what}: {e}")
+            say(
+                language,
+                "check-unreadable",
+                &[("error", e.to_string().into())],
+            )
         })?
         .to_rgb8();
     let rows = AtomicU64::new(0);

@@ -14,8 +14,8 @@ use raycourse::check::grading::{
     Grade, class_sheet, decode, folder_lines, folder_sheet, grade_folder, image_of_any_stage,
     lossy, student_line, students_among,
 };
-use raycourse::check::language::Language;
 use raycourse::check::report::check;
+use raycourse::messages::language::Language;
 use raycourse::render::cache::InMemory;
 use wasm_bindgen::prelude::*;
 

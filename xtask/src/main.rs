@@ -14,7 +14,10 @@
 //!   for its demos and check page, in `book/build/` (`--open`: served and opened);
 //! - `cargo xtask book-tools`: mdBook, its formula preprocessor and its translation
 //!   tools, installed where missing at the versions the book is built with (pinned
-//!   there alone: CI and the translation check call this).
+//!   there alone: CI and the translation check call this);
+//! - `cargo xtask messages [--accept]`: the program's message catalogue complete and
+//!   current in every language (`--accept`: the translations as they are recorded
+//!   as current).
 
 mod book;
 mod cfg;
@@ -28,6 +31,7 @@ mod manifest;
 // The exercises' markers are read as the checklist reads them, from its own file.
 #[path = "../../tests/exercises/marker.rs"]
 mod marker;
+mod messages;
 mod preprocessor;
 mod prune;
 mod serve;
@@ -60,7 +64,8 @@ fn run(args: &[String]) -> Result<(), String> {
     let usage = "usage: cargo xtask view sN DIR | cargo xtask views DIR | \
                  cargo xtask exercise sN DIR [--only sN.K] [--switch] | cargo xtask exercises | \
                  cargo xtask mdbook-listings | cargo xtask mdbook-formulas hide|show | \
-                 cargo xtask book [--open] | cargo xtask book-tools";
+                 cargo xtask book [--open] | cargo xtask book-tools | \
+                 cargo xtask messages [--accept]";
     match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["view", n, dir] => {
             let n = session(n)?;
@@ -91,6 +96,8 @@ fn run(args: &[String]) -> Result<(), String> {
         ["book"] => book::build(&root(), false),
         ["book", "--open"] => book::build(&root(), true),
         ["book-tools"] => book::install_tools(&root()),
+        ["messages"] => messages::check(&root(), false),
+        ["messages", "--accept"] => messages::check(&root(), true),
         _ => Err(usage.into()),
     }
 }

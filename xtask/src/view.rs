@@ -29,6 +29,7 @@ pub fn write_view(root: &Path, session: u32, out: &Path) -> Result<(), String> {
             &out.join(format!("sessions/s{n}")),
         )?;
     }
+    copy_folder(&root.join("messages"), &out.join("messages"))?;
     copy_assets(root, out, session)?;
     copy_tests(root, out, session)?;
     write(&out.join("README.md"), &readme(session))

@@ -12,6 +12,17 @@ pub enum Language {
 }
 
 impl Language {
+    /// Every language of the catalogue, English (the source) first.
+    pub const ALL: [Language; 2] = [Language::English, Language::French];
+
+    /// The language's code, as locales and the catalogue's folders name it.
+    pub fn code(self) -> &'static str {
+        match self {
+            Language::English => "en",
+            Language::French => "fr",
+        }
+    }
+
     /// The language of a locale or a language code: French for `fr`, `fr_FR.UTF-8`,
     /// `fr-CA` and the like, English for anything else.
     pub fn from_locale(locale: &str) -> Language {

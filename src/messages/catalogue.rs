@@ -1,0 +1,138 @@
+//! The catalogue: the Fluent files of each language, read once, and each message
+//! formatted with its arguments.
+//!
+//! A message is named by an id (`check-matches`), or an id and an attribute
+//! (`mistake-no-gamma.hint`), and given its arguments by name:
+//! `say(language, "check-place", &[("place", name.into()), ("share", 12.5.into())])`.
+
+use std::sync::OnceLock;
+
+use fluent_bundle::concurrent::FluentBundle;
+use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
+use unic_langid::LanguageIdentifier;
+
+use crate::messages::language::Language;
+use crate::messages::numbers;
+
+/// A message's argument: a text, or a number that the message writes as its
+/// language does.
+pub type Argument<'a> = FluentValue<'a>;
+
+/// The catalogue's files: each language's, by file name, in `messages/<code>/`.
+/// English is the source; every other language holds the same messages.
+pub const FILES: &[(Language, &[(&str, &str)])] = &[
+    (
+        Language::English,
+        &[("check.ftl", include_str!("../../messages/en/check.ftl"))],
+    ),
+    (
+        Language::French,
+        &[("check.ftl", include_str!("../../messages/fr/check.ftl"))],
+    ),
+];
+
+/// The message `id` (or `id.attribute`) in `language`, with `arguments`. A message
+/// missing from the catalogue is written as its id, which the catalogue's tests
+/// make sure never happens.
+pub fn say(language: Language, id: &str, arguments: &[(&str, Argument)]) -> String {
+    let bundle = bundle(language);
+    let (name, attribute) = id.split_once('.').map_or((id, None), |(n, a)| (n, Some(a)));
+    let message = bundle.get_message(name);
+    let pattern = message.and_then(|m| match attribute {
+        None => m.value(),
+        Some(attribute) => m.get_attribute(attribute).map(|a| a.value()),
+    });
+    let Some(pattern) = pattern else {
+        debug_assert!(false, "{id}: no such message in {language:?}");
+        return id.to_owned();
+    };
+    let arguments: FluentArgs = arguments.iter().cloned().collect();
+    let mut errors = Vec::new();
+    let text = bundle.format_pattern(pattern, Some(&arguments), &mut errors);
+    debug_assert!(errors.is_empty(), "{id} in {language:?}: {errors:?}");
+    text.into_owned()
+}
+
+/// The catalogue of `language`, read on first use.
+fn bundle(language: Language) -> &'static FluentBundle<FluentResource> {
+    static BUNDLES: [OnceLock<FluentBundle<FluentResource>>; 2] =
+        [OnceLock::new(), OnceLock::new()];
+    BUNDLES[language as usize].get_or_init(|| read(language))
+}
+
+/// Reads the files of `language` into one bundle. Messages are written as they are,
+/// without Unicode's direction marks around the arguments (English and French both
+/// run left to right), with Fluent's functions (`NUMBER`), and numbers written by
+/// [`numbers::write`].
+fn read(language: Language) -> FluentBundle<FluentResource> {
+    let code: LanguageIdentifier = language.code().parse().expect("a language code");
+    let mut bundle = FluentBundle::new_concurrent(vec![code]);
+    bundle.set_use_isolating(false);
+    bundle.set_formatter(Some(numbers::write));
+    bundle
+        .add_builtins()
+        .expect("Fluent's functions (NUMBER) added once");
+    for (file, text) in files(language) {
+        let resource = FluentResource::try_new(text.to_string()).unwrap_or_else(|(_, errors)| {
+            panic!("messages/{}/{file}: {errors:?}", language.code())
+        });
+        bundle
+            .add_resource(resource)
+            .unwrap_or_else(|errors| panic!("messages/{}/{file}: {errors:?}", language.code()));
+    }
+    bundle
+}
+
+/// The files of `language`.
+pub fn files(language: Language) -> &'static [(&'static str, &'static str)] {
+    FILES
+        .iter()
+        .find(|(l, _)| *l == language)
+        .map_or(&[], |(_, files)| files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The brightness line with the ratios `red`, `green` and `blue`.
+    fn brightness(language: Language, [red, green, blue]: [f64; 3]) -> String {
+        let arguments = [
+            ("red", red.into()),
+            ("green", green.into()),
+            ("blue", blue.into()),
+        ];
+        say(language, "check-brightness", &arguments)
+    }
+
+    #[test]
+    fn numbers_take_the_language_s_decimal_mark_grouping_and_decimals() {
+        let ratios = [1.5, 1234.5678, 0.005];
+        let english = brightness(Language::English, ratios);
+        assert!(
+            english.ends_with("red x1.50, green x1,234.57, blue x0.01"),
+            "{english}"
+        );
+        let french = brightness(Language::French, ratios);
+        assert!(
+            french.ends_with("rouge ×\u{a0}1,50, vert ×\u{a0}1\u{202f}234,57, bleu ×\u{a0}0,01"),
+            "{french}"
+        );
+    }
+
+    #[test]
+    fn a_message_chooses_its_words_by_its_arguments() {
+        let unit = |cell: u32| say(Language::French, "check-unit", &[("cell", cell.into())]);
+        assert_eq!(unit(1), "des pixels");
+        assert_eq!(unit(8), "des blocs de 8 × 8 pixels");
+    }
+
+    #[test]
+    fn attributes_are_messages_of_their_own() {
+        let hint = say(Language::French, "mistake-no-gamma.hint", &[]);
+        assert!(
+            hint.ends_with("écrivez min(255, L^(1/2,2)), et non min(255, L)"),
+            "{hint}"
+        );
+    }
+}
