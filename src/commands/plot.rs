@@ -10,6 +10,7 @@ use plotters::prelude::*;
 use plotters::style::FontStyle;
 use raycourse::maths::to_double;
 use raycourse::messages::language::Language;
+use raycourse::messages::say;
 use raycourse::render::png::encode_rgb8;
 use raycourse::studies::convergence::{Rung, axis_label, read_rungs};
 
@@ -106,18 +107,18 @@ pub fn plot_rungs(title: &str, rungs: &[Rung], language: Language) -> Option<Vec
         root.fill(&WHITE).ok()?;
         let root = root.titled(title, ("sans-serif", 24)).ok()?;
         let (left, right) = root.split_horizontally(SIZE.0 / 2);
-        let samples_name = language.pick("samples per pixel", "échantillons par pixel");
-        let seconds_name = language.pick("seconds", "secondes");
+        let samples_name = say(language, "plot-samples", &[]);
+        let seconds_name = say(language, "plot-seconds", &[]);
         draw_panel(
             &left,
             &lines(&shown, &samples, language),
-            samples_name,
+            &samples_name,
             language,
         )?;
         draw_panel(
             &right,
             &lines(&shown, &seconds, language),
-            seconds_name,
+            &seconds_name,
             language,
         )?;
         root.present().ok()?;
@@ -143,67 +144,61 @@ fn lines(shown: &[&Rung], x_of: &dyn Fn(&Rung) -> f64, language: Language) -> Ve
         .collect()
 }
 
-/// The English words of the studies' variant labels, with their French; the longer
-/// first where one holds another.
-const FRENCH_WORDS: &[(&str, &str)] = &[
-    ("bounces", "rebonds"),
-    ("bounce", "rebond"),
-    ("brute force", "force brute"),
-    ("bounding box", "boîte englobante"),
-    ("fast BVH", "BVH rapide"),
-    ("light sampling", "échantillonnage de la lumière"),
-    ("naive", "naïf"),
-    ("limit", "limite"),
-    ("leaf", "feuille"),
-    ("bilinear", "bilinéaire"),
-    ("nearest", "plus proche"),
-    ("single-fast", "simple, moteur rapide"),
-    ("double-fast", "double, moteur rapide"),
-    ("single", "simple"),
-    ("independent", "indépendant"),
-    ("stratified", "stratifié"),
-    ("sobol", "Sobol"),
-    ("adaptive", "adaptatif"),
+/// The catalogue's words of the studies' variant labels (`plot-word-...`), the
+/// longer first where one holds another.
+const WORDS: &[&str] = &[
+    "bounces",
+    "bounce",
+    "brute-force",
+    "bounding-box",
+    "fast-bvh",
+    "light-sampling",
+    "naive",
+    "limit",
+    "leaf",
+    "bilinear",
+    "nearest",
+    "single-fast",
+    "double-fast",
+    "single",
+    "independent",
+    "stratified",
+    "sobol",
+    "adaptive",
 ];
 
-/// A variant's label in `language`: in French, its words translated and its
-/// numbers with a decimal comma (`sobol + adaptive 0.05` reads `Sobol + adaptatif
-/// 0,05`); names such as `Mitsuba llvm_ad_rgb` are left as they are.
+/// A variant's label in `language`: its words translated and its numbers written
+/// as the language writes them (`sobol + adaptive 0.05` reads `Sobol + adaptatif
+/// 0,05` in French); names such as `Mitsuba llvm_ad_rgb` are left as they are.
 fn variant_label(label: &str, language: Language) -> String {
-    match language {
-        Language::English => label.to_owned(),
-        Language::French => {
-            let words = FRENCH_WORDS
-                .iter()
-                .fold(label.to_owned(), |text, (english, french)| {
-                    text.replace(english, french)
-                });
-            decimal_commas(&words)
+    let words = WORDS.iter().fold(label.to_owned(), |text, word| {
+        let id = format!("plot-word-{word}");
+        text.replace(&say(Language::English, &id, &[]), &say(language, &id, &[]))
+    });
+    numbers_in(&words, language)
+}
+
+/// `text` with each decimal number in it (digits, a point, digits) written as
+/// `language` writes numbers; the rest as it is (`1e-3`, `2.`).
+fn numbers_in(text: &str, language: Language) -> String {
+    let mut written = String::new();
+    let mut rest = text;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_digit()) {
+        written.push_str(&rest[..start]);
+        let length = rest[start..]
+            .find(|c: char| !c.is_ascii_digit() && c != '.')
+            .unwrap_or(rest.len() - start);
+        let token = rest[start..start + length].trim_end_matches('.');
+        let value = token.parse::<f64>().ok().filter(|_| token.contains('.'));
+        match value {
+            Some(value) => {
+                written.push_str(&say(language, "plot-number", &[("value", value.into())]))
+            }
+            None => written.push_str(token),
         }
+        rest = &rest[start + token.len()..];
     }
-}
-
-/// `text` as `language` writes its numbers: with a decimal comma in French.
-fn decimal_commas_in(language: Language, text: String) -> String {
-    match language {
-        Language::English => text,
-        Language::French => decimal_commas(&text),
-    }
-}
-
-/// `text` with a comma for each point between two digits.
-fn decimal_commas(text: &str) -> String {
-    let chars: Vec<char> = text.chars().collect();
-    chars
-        .iter()
-        .enumerate()
-        .map(|(k, &c)| {
-            let between_digits = k > 0
-                && chars[k - 1].is_ascii_digit()
-                && chars.get(k + 1).is_some_and(char::is_ascii_digit);
-            if c == '.' && between_digits { ',' } else { c }
-        })
-        .collect()
+    written + rest
 }
 
 /// The range of a logarithmic axis holding `values`, with some room around them.
@@ -216,7 +211,7 @@ fn axis(values: impl Iterator<Item = f64> + Clone) -> std::ops::Range<f64> {
 /// Draws `lines` on `area`: log-log axes, a guide of slope -1/2 through the first
 /// line's first point, each line in its own colour, and the legend, in `language`.
 fn draw_panel(area: &Area, lines: &[Line], x_name: &str, language: Language) -> Option<()> {
-    let tick = |v: &f64| decimal_commas_in(language, axis_label(*v));
+    let tick = |v: &f64| numbers_in(&axis_label(*v), language);
     let points = || lines.iter().flat_map(|(_, p)| p.iter().copied());
     let (x_range, y_range) = (axis(points().map(|p| p.0)), axis(points().map(|p| p.1)));
     let mut chart = ChartBuilder::on(area)
@@ -230,7 +225,7 @@ fn draw_panel(area: &Area, lines: &[Line], x_name: &str, language: Language) -> 
         .x_label_formatter(&tick)
         .y_label_formatter(&tick)
         .x_desc(x_name)
-        .y_desc(language.pick("RMSE (linear radiance)", "RMSE (luminance linéaire)"))
+        .y_desc(say(language, "plot-error", &[]))
         .label_style(("sans-serif", 15))
         .draw()
         .ok()?;
@@ -240,7 +235,7 @@ fn draw_panel(area: &Area, lines: &[Line], x_name: &str, language: Language) -> 
     chart
         .draw_series(DashedLineSeries::new(guide, 6, 4, grey.stroke_width(1)))
         .ok()?
-        .label(language.pick("slope -1/2", "pente -1/2"))
+        .label(say(language, "plot-slope", &[]))
         .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], grey));
     for (i, (label, points)) in lines.iter().enumerate() {
         let colour = Palette99::pick(i).to_rgba();
@@ -290,10 +285,15 @@ mod tests {
         }
     }
 
-    /// Only a point between two digits becomes a comma.
+    /// Only a number with a point between two digits is written in French.
     #[test]
-    fn decimal_points_between_digits_become_commas() {
-        assert_eq!(decimal_commas("0.05, 1e-3 and 2."), "0,05, 1e-3 and 2.");
-        assert_eq!(decimal_commas_in(Language::English, "0.01".into()), "0.01");
+    fn decimal_numbers_are_written_as_the_language_writes_them() {
+        let text = "0.05, 1e-3, 12.5 and 2.";
+        assert_eq!(
+            numbers_in(text, Language::French),
+            "0,05, 1e-3, 12,5 and 2."
+        );
+        assert_eq!(numbers_in(text, Language::English), text);
+        assert_eq!(numbers_in("1234.5", Language::French), "1234,5");
     }
 }

@@ -23,11 +23,17 @@ pub type Argument<'a> = FluentValue<'a>;
 pub const FILES: &[(Language, &[(&str, &str)])] = &[
     (
         Language::English,
-        &[("check.ftl", include_str!("../../messages/en/check.ftl"))],
+        &[
+            ("check.ftl", include_str!("../../messages/en/check.ftl")),
+            ("plot.ftl", include_str!("../../messages/en/plot.ftl")),
+        ],
     ),
     (
         Language::French,
-        &[("check.ftl", include_str!("../../messages/fr/check.ftl"))],
+        &[
+            ("check.ftl", include_str!("../../messages/fr/check.ftl")),
+            ("plot.ftl", include_str!("../../messages/fr/plot.ftl")),
+        ],
     ),
 ];
 
