@@ -25,6 +25,7 @@ pub const FILES: &[(Language, &[(&str, &str)])] = &[
         Language::English,
         &[
             ("check.ftl", include_str!("../../messages/en/check.ftl")),
+            ("page.ftl", include_str!("../../messages/en/page.ftl")),
             ("plot.ftl", include_str!("../../messages/en/plot.ftl")),
         ],
     ),
@@ -32,10 +33,18 @@ pub const FILES: &[(Language, &[(&str, &str)])] = &[
         Language::French,
         &[
             ("check.ftl", include_str!("../../messages/fr/check.ftl")),
+            ("page.ftl", include_str!("../../messages/fr/page.ftl")),
             ("plot.ftl", include_str!("../../messages/fr/plot.ftl")),
         ],
     ),
 ];
+
+/// Whether the catalogue of `language` has the message `id` (or `id.attribute`).
+pub fn has(language: Language, id: &str) -> bool {
+    let (name, attribute) = id.split_once('.').map_or((id, None), |(n, a)| (n, Some(a)));
+    let message = bundle(language).get_message(name);
+    message.is_some_and(|m| attribute.is_none_or(|a| m.get_attribute(a).is_some()))
+}
 
 /// The message `id` (or `id.attribute`) in `language`, with `arguments`. A message
 /// missing from the catalogue is written as its id, which the catalogue's tests

@@ -51,15 +51,6 @@ impl Language {
             Language::French => french,
         }
     }
-
-    /// `x` with `digits` decimals, and the language's decimal mark.
-    pub fn number(self, x: f64, digits: usize) -> String {
-        let text = format!("{x:.digits$}");
-        match self {
-            Language::English => text,
-            Language::French => text.replace('.', ","),
-        }
-    }
 }
 
 #[cfg(test)]
@@ -74,11 +65,5 @@ mod tests {
         for locale in ["", "C", "C.UTF-8", "en_GB.UTF-8", "fy_NL", "french"] {
             assert_eq!(Language::from_locale(locale), Language::English, "{locale}");
         }
-    }
-
-    #[test]
-    fn numbers_take_the_language_s_decimal_mark() {
-        assert_eq!(Language::French.number(1.234, 2), "1,23");
-        assert_eq!(Language::English.number(1.234, 2), "1.23");
     }
 }

@@ -15,6 +15,7 @@
 //! | [`functions`] | the course functions a scene's render runs |
 //! | [`checking`] | `check` on a student's image |
 //! | [`grading`] | `check --all` on a class's folder, or a student's |
+//! | [`words`] | the page's words, from the program's message catalogue |
 //! | `command_line` | for the tests: a stage as the command line renders it |
 
 pub mod assets;
@@ -25,6 +26,7 @@ pub mod demo;
 pub mod edits;
 pub mod functions;
 pub mod grading;
+pub mod words;
 
 pub use checking::check_image;
 pub use demo::Demo;

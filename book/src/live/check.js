@@ -17,7 +17,7 @@
       this.worker = startWorkers((message) => this.received(message), 1)[0];
       this.worker.postMessage({ kind: "stages" });
       root.dataset.state = "loading";
-      root.textContent = say("loading the renderer…");
+      root.textContent = say("page-loading");
     }
 
     received(message) {
@@ -25,7 +25,7 @@
       if (message.job !== this.job) return;
       if (message.kind === "progress") {
         this.progress.hidden = false;
-        this.status.textContent = `${say("rendering the reference")}${french ? "\u00a0" : ""}: ${message.rows} ${say("rows")}`;
+        this.status.textContent = say("page-check-rows", { rows: message.rows });
       }
       if (message.kind === "checked") this.show(message);
       if (message.kind === "graded") this.graded(message);
@@ -35,17 +35,17 @@
 
     build(stages) {
       this.stage = element("select", { className: "live-stage" },
-        ...stages.map((s) => element("option", { value: s.name, textContent: `${say("session")} ${s.session}${french ? "\u00a0" : ""}: ${s.name}` })));
+        ...stages.map((s) => element("option", { value: s.name, textContent: say("page-check-stage", { session: s.session, stage: s.name }) })));
       this.file = element("input", { type: "file", accept: "image/png,image/jpeg,.ppm" });
-      this.button = element("button", { textContent: say("check"), onclick: () => this.check() });
+      this.button = element("button", { textContent: say("page-check"), onclick: () => this.check() });
       this.progress = element("progress", { hidden: true });
       this.status = element("p", { className: "live-status" });
       this.status.setAttribute("role", "status");
       this.report = element("pre", { className: "live-report" });
-      this.difference = element("img", { className: "live-difference", alt: say("the differences: differing pixels or blocks in red"), hidden: true });
+      this.difference = element("img", { className: "live-difference", alt: say("page-check-differences"), hidden: true });
       this.root.textContent = "";
       this.root.append(
-        element("p", {}, element("label", {}, `${say("stage")} `, this.stage), " ", element("label", {}, `${say("your image")} `, this.file), " ", this.button),
+        element("p", {}, element("label", {}, `${say("page-stage")} `, this.stage), " ", element("label", {}, `${say("page-check-image")} `, this.file), " ", this.button),
         this.progress, this.status, this.report, this.difference, this.classForm());
       this.root.dataset.state = "ready";
     }
@@ -55,26 +55,26 @@
       const files = { type: "file", multiple: true, accept: "image/png,image/jpeg,.ppm" };
       this.folder = element("input", { ...files, webkitdirectory: true, className: "live-class-folder" });
       this.images = element("input", { ...files, className: "live-class-images" });
-      this.gradeButton = element("button", { textContent: say("grade"), onclick: () => this.grade() });
+      this.gradeButton = element("button", { textContent: say("page-grade"), onclick: () => this.grade() });
       this.lines = element("pre", { className: "live-report live-class-lines" });
       this.download = element("a", { className: "live-sheet", download: "grades.csv", hidden: true,
-        textContent: say("the grading sheet, grades.csv") });
+        textContent: say("page-grade-sheet") });
       return element("fieldset", { className: "live-class" },
-        element("legend", { textContent: say("A class, as check --all grades it") }),
-        element("p", {}, element("label", {}, `${say("the class's folder (a folder per student)")} `, this.folder)),
-        element("p", {}, element("label", {}, `${say("or one student's images, named after their stages")} `, this.images)),
+        element("legend", { textContent: say("page-grade-legend") }),
+        element("p", {}, element("label", {}, `${say("page-grade-folder")} `, this.folder)),
+        element("p", {}, element("label", {}, `${say("page-grade-images")} `, this.images)),
         element("p", {}, this.gradeButton), this.lines, this.download);
     }
 
     /** Grades the folder or the images chosen, as `check --all` does. */
     async grade() {
       const chosen = [...this.folder.files, ...this.images.files];
-      if (!chosen.length) return this.fail(say("choose a class's folder or a student's images first"));
+      if (!chosen.length) return this.fail(say("page-grade-choose"));
       this.job += 1;
       this.root.dataset.state = "grading";
       this.lines.textContent = "";
       this.download.hidden = true;
-      this.status.textContent = say("grading…");
+      this.status.textContent = say("page-grading");
       const files = await Promise.all(chosen.map(async (file) =>
         ({ path: file.webkitRelativePath || file.name, bytes: await file.arrayBuffer() })));
       const language = french ? "fr" : "en";
@@ -85,7 +85,7 @@
     graded(message) {
       this.progress.hidden = true;
       this.lines.textContent += `${message.lines}\n`;
-      this.status.textContent = `${say("folders graded")}${french ? "\u00a0" : ""}: ${message.done} / ${message.count}`;
+      this.status.textContent = say("page-graded", { done: message.done, count: message.count });
     }
 
     /** Every folder graded: the sheet, offered for download. */
@@ -94,18 +94,18 @@
       this.download.href = URL.createObjectURL(new Blob([message.csv], { type: "text/csv" }));
       this.download.dataset.csv = message.csv;
       this.download.hidden = false;
-      this.status.textContent = say(message.passes ? "every image matches" : "some images differ");
+      this.status.textContent = say(message.passes ? "page-grade-matching" : "page-grade-differing");
       this.root.dataset.state = message.passes ? "graded-matching" : "graded-differing";
     }
 
     async check() {
       const file = this.file.files[0];
-      if (!file) return this.fail(say("choose your image first (a PNG, JPEG or PPM file)"));
+      if (!file) return this.fail(say("page-check-choose"));
       this.job += 1;
       this.root.dataset.state = "checking";
       this.report.textContent = "";
       this.difference.hidden = true;
-      this.status.textContent = say("rendering the reference…");
+      this.status.textContent = say("page-check-rendering");
       const bytes = await file.arrayBuffer();
       const language = french ? "fr" : "en";
       this.worker.postMessage({ kind: "check", job: this.job, stage: this.stage.value, file: bytes, language }, [bytes]);
@@ -113,7 +113,7 @@
 
     show(message) {
       this.progress.hidden = true;
-      this.status.textContent = say(message.matches ? "matches" : "differs");
+      this.status.textContent = say(message.matches ? "page-check-matches" : "page-check-differs");
       this.report.textContent = message.text;
       this.report.className = `live-report ${message.matches ? "live-matches" : "live-differs"}`;
       if (this.difference.src) URL.revokeObjectURL(this.difference.src);
@@ -131,5 +131,5 @@
     }
   }
 
-  startEach(".live-check", "the check", (root) => { root.liveCheck = new LiveCheck(root); });
+  startEach(".live-check", (root) => { root.liveCheck = new LiveCheck(root); });
 })();

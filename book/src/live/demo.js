@@ -7,9 +7,10 @@
 // book's browser tests use it).
 (function () {
   "use strict";
-  const { startWorkers, startEach, element, duration, say, number, french } = window.raycourseLive;
+  const { startWorkers, startEach, element, duration, say } = window.raycourseLive;
 
-  // A control: its id, its label, how it reads its starting value from a stage's
+  // A control: its id, its label (a message of the catalogue, with its arguments:
+  // `["page-light-axis", { axis: "x" }]`, or its id alone), how it reads its starting value from a stage's
   // scene file (`undefined`: the stage has nothing it could change, and it is
   // hidden), and the keys of the file it changes (`edit(value, values)`, where
   // `values` holds every control's value by id).
@@ -17,10 +18,12 @@
     ({ id, kind: "range", label, min, max, step, read, edit, show });
   const toggle = (id, label, read, edit) => ({ id, kind: "checkbox", label, read, edit });
   const choice = (id, label, options, read, edit) => ({ id, kind: "select", label, options, read, edit });
+  /** A control's or an option's label in the page's language. */
+  const labelOf = (label) => (Array.isArray(label) ? say(...label) : say(label));
 
   const light = (values) => ({ "light.position": [values.lightX, values.lightY, values.lightZ] });
   const lightAxis = (id, axis, limits) =>
-    range(id, `light ${"xyz"[axis]}`, limits, (f) => f.light && f.light.position[axis], (_, v) => light(v));
+    range(id, ["page-light-axis", { axis: "xyz"[axis] }], limits, (f) => f.light && f.light.position[axis], (_, v) => light(v));
   const centre = (f) => (f.spheres && f.spheres[0] && f.spheres[0].material) || {};
   const materialName = (f) => {
     const m = centre(f);
@@ -29,69 +32,69 @@
   const material = (v) =>
     v.material === "mirror" ? "mirror" : v.material === "glass" ? { glass: v.index } : { diffuse: [1, 1, 1] };
   const offsets = [
-    ["robust", "past the point's rounding error (the crate's)"],
-    ["0.1", "ε = 0.1"],
-    ["0.001", "ε = 0.001"],
-    ["1e-9", "ε = 10⁻⁹"],
-    ["1e-14", "ε = 10⁻¹⁴"],
-    ["0", "ε = 0: shadow acne"],
+    ["robust", "page-offset-robust"],
+    ["0.1", ["page-offset", { epsilon: 0.1 }]],
+    ["0.001", ["page-offset", { epsilon: 0.001 }]],
+    ["1e-9", ["page-offset", { epsilon: "10⁻⁹" }]],
+    ["1e-14", ["page-offset", { epsilon: "10⁻¹⁴" }]],
+    ["0", "page-offset-none"],
   ];
-  const samples = range("samples", "samples per pixel", [1, 256, 1], (f) => f.render.samples || 1, () => ({}));
+  const samples = range("samples", "page-samples", [1, 256, 1], (f) => f.render.samples || 1, () => ({}));
   const accelerations = (names) =>
-    choice("acceleration", "search of the mesh", names, (f) => f.render.acceleration || "none",
+    choice("acceleration", "page-search", names, (f) => f.render.acceleration || "none",
       (v) => ({ "render.acceleration": v }));
-  const meshes = [["none", "brute force"], ["bbox", "bounding box"], ["bvh", "BVH"]];
+  const meshes = [["none", "page-brute-force"], ["bbox", "page-bounding-box"], ["bvh", "page-bvh"]];
   // Beyond the course: the same image by the fast engine, in less time.
-  const fast = toggle("fast", "the fast engine (beyond the course: the same image)", (f) => !!f.render.fast,
+  const fast = toggle("fast", "page-fast", (f) => !!f.render.fast,
     (on) => ({ "render.fast": on || null }));
 
   // The controls that each session teaches, and the size its demo renders at.
   const SESSIONS = {
     1: { size: 256, controls: [
-      range("fov", "field of view (degrees)", [20, 120, 1], (f) => f.camera.fov, (x) => ({ "camera.fov": x })),
+      range("fov", "page-field-of-view", [20, 120, 1], (f) => f.camera.fov, (x) => ({ "camera.fov": x })),
       lightAxis("lightX", 0, [-50, 50, 1]), lightAxis("lightY", 1, [-9, 55, 1]), lightAxis("lightZ", 2, [-55, 55, 1]),
-      range("albedo", "albedo of the sphere", [0, 1, 0.05], (f) => f.light && centre(f).diffuse && centre(f).diffuse[0],
+      range("albedo", "page-albedo", [0, 1, 0.05], (f) => f.light && centre(f).diffuse && centre(f).diffuse[0],
         (x) => ({ "spheres.0.material": { diffuse: [x, x, x] } })),
     ] },
     2: { size: 256, controls: [
-      toggle("gamma", "gamma correction (2.2)", (f) => f.render.gamma !== undefined,
+      toggle("gamma", "page-gamma", (f) => f.render.gamma !== undefined,
         (on) => ({ "render.gamma": on ? 2.2 : null })),
-      choice("offset", "shadow ray's offset", offsets, (f) => (f.render.shadows ? "robust" : undefined),
+      choice("offset", "page-shadow-offset", offsets, (f) => (f.render.shadows ? "robust" : undefined),
         (x) => ({ "render.shadow_offset": x === "robust" ? null : Number(x) })),
-      choice("material", "the centre sphere", [["diffuse", "diffuse"], ["mirror", "mirror"], ["glass", "glass"]],
+      choice("material", "page-centre-sphere", [["diffuse", "page-diffuse"], ["mirror", "page-mirror"], ["glass", "page-glass"]],
         (f) => (f.render.shadows ? materialName(f) : undefined), (_, v) => ({ "spheres.0.material": material(v) })),
-      range("index", "refractive index", [1, 2.5, 0.05], (f) => (f.render.shadows ? centre(f).glass || 1.5 : undefined),
+      range("index", "page-refractive-index", [1, 2.5, 0.05], (f) => (f.render.shadows ? centre(f).glass || 1.5 : undefined),
         (_, v) => ({ "spheres.0.material": material(v) }), (v) => v.material === "glass"),
     ] },
     3: { size: 256, controls: [
       samples,
-      range("bounces", "bounces", [0, 10, 1], (f) => (f.render.bounces === undefined ? 5 : f.render.bounces),
+      range("bounces", "page-bounces", [0, 10, 1], (f) => (f.render.bounces === undefined ? 5 : f.render.bounces),
         (x) => ({ "render.bounces": x })),
-      toggle("antialiasing", "antialiasing", (f) => f.camera.antialiasing !== undefined,
+      toggle("antialiasing", "page-antialiasing", (f) => f.camera.antialiasing !== undefined,
         (on) => ({ "camera.antialiasing": on ? 0.5 : null })),
       fast,
     ] },
     4: { size: 256, controls: [
       samples,
-      range("radius", "light radius", [0.5, 15, 0.5], (f) => f.light && f.light.radius, (x) => ({ "light.radius": x })),
-      toggle("sampling", "light sampling", (f) => (f.light && f.light.radius ? !!f.render.light_sampling : undefined),
+      range("radius", "page-light-radius", [0.5, 15, 0.5], (f) => f.light && f.light.radius, (x) => ({ "light.radius": x })),
+      toggle("sampling", "page-light-sampling", (f) => (f.light && f.light.radius ? !!f.render.light_sampling : undefined),
         (on) => ({ "render.light_sampling": on })),
-      range("aperture", "aperture", [0.1, 5, 0.1], (f) => f.camera.lens && f.camera.lens.aperture,
+      range("aperture", "page-aperture", [0.1, 5, 0.1], (f) => f.camera.lens && f.camera.lens.aperture,
         (_, v) => ({ "camera.lens": { aperture: v.aperture, focus: v.focus } })),
-      range("focus", "focus distance", [20, 90, 1], (f) => f.camera.lens && f.camera.lens.focus,
+      range("focus", "page-focus", [20, 90, 1], (f) => f.camera.lens && f.camera.lens.focus,
         (_, v) => ({ "camera.lens": { aperture: v.aperture, focus: v.focus } })),
       fast,
     ] },
     5: { size: 128, cost: true, controls: [samples, accelerations(meshes.slice(0, 2)), fast] },
     6: { size: 256, cost: true, controls: [
       samples, accelerations(meshes),
-      toggle("smooth", "smooth normals", (f) => !!f.meshes[0].smooth_normals, (on) => ({ "meshes.0.smooth_normals": on })),
+      toggle("smooth", "page-smooth-normals", (f) => !!f.meshes[0].smooth_normals, (on) => ({ "meshes.0.smooth_normals": on })),
       fast,
     ] },
     7: { size: 256, orbit: true, controls: [
       samples,
-      range("plunge", "plunge (degrees); drag the image or use the arrow keys to orbit", [-10, 80, 1], (f) => f.camera.plunge || 0, () => ({})),
-      toggle("texture", "texture", (f) => !!f.meshes[0].textured, (on) => ({ "meshes.0.textured": on })),
+      range("plunge", "page-plunge", [-10, 80, 1], (f) => f.camera.plunge || 0, () => ({})),
+      toggle("texture", "page-texture", (f) => !!f.meshes[0].textured, (on) => ({ "meshes.0.textured": on })),
       fast,
     ] },
   };
@@ -118,7 +121,7 @@
       this.times = {};
       this.workers = startWorkers((message, worker) => this.received(message, worker));
       this.workers[0].postMessage({ kind: "stages" });
-      this.status(say("loading the renderer…"));
+      this.status(say("page-loading"));
     }
 
     status(text, state) {
@@ -132,7 +135,7 @@
       if (message.kind === "rows") this.paint(message);
       if (message.kind === "pass") this.passDone(message);
       if (message.kind === "cost") this.costDone(message);
-      if (message.kind === "error") this.status(`${say("error")}: ${message.message}`, "error");
+      if (message.kind === "error") this.status(say("page-error", { message: message.message }), "error");
     }
 
     /** Builds the stage list, the canvases and the controls once the stages are known. */
@@ -140,15 +143,15 @@
       this.stages = stages.filter((s) => s.session === this.session);
       this.root.textContent = "";
       this.select = element("select", { className: "live-stage", onchange: () => this.pickStage() },
-        ...this.stages.map((s) => element("option", { value: s.name, textContent: french ? s.name : `${s.name}: ${s.title}` })));
+        ...this.stages.map((s) => element("option", { value: s.name, textContent: say("page-stage-option", { stage: s.name, title: s.title }) })));
       this.canvas = element("canvas", { className: "live-image", width: this.size, height: this.size });
       this.canvas.setAttribute("role", "img");
       const images = element("div", { className: "live-images" }, this.canvas);
       if (this.setup.cost) {
         this.costCanvas = element("canvas", { className: "live-cost", width: this.size, height: this.size });
-        this.costCaption = element("figcaption", { textContent: say("cost: tests per camera ray") });
+        this.costCaption = element("figcaption", { textContent: say("page-cost-caption") });
         this.costCanvas.setAttribute("role", "img");
-        this.costCanvas.setAttribute("aria-label", `${say("the cost image")}, ${this.costCaption.textContent}`);
+        this.costCanvas.setAttribute("aria-label", say("page-cost-image", { caption: this.costCaption.textContent }));
         images.append(element("figure", {}, this.costCanvas, this.costCaption));
       }
       if (this.setup.orbit) this.orbit();
@@ -157,9 +160,9 @@
       this.statusLine.setAttribute("role", "status");
       this.timesTable = element("table", { className: "live-times" });
       this.functions = element("code", { className: "live-functions" });
-      this.functionsTitle = element("summary", { textContent: say("the course functions this image ran") });
+      this.functionsTitle = element("summary", { textContent: say("page-functions-course") });
       const ran = element("details", {}, this.functionsTitle, this.functions);
-      this.root.append(element("p", {}, element("label", {}, `${say("stage")} `, this.select)), images, this.controls,
+      this.root.append(element("p", {}, element("label", {}, `${say("page-stage")} `, this.select)), images, this.controls,
         this.statusLine, this.timesTable, ran);
       this.pickStage();
     }
@@ -185,11 +188,11 @@
     /** The input of `control`, starting at `value`. */
     input(control, value) {
       // The value beside a slider, for the eye: a screen reader reads the slider's own.
-      const shown = element("output", { textContent: String(value) });
+      const shown = element("output", { textContent: say("page-number", { value }) });
       shown.setAttribute("aria-hidden", "true");
       let input;
       if (control.kind === "select") {
-        input = element("select", {}, ...control.options.map(([v, label]) => element("option", { value: v, textContent: say(label) })));
+        input = element("select", {}, ...control.options.map(([v, label]) => element("option", { value: v, textContent: labelOf(label) })));
         input.value = value;
       } else {
         input = element("input", { type: control.kind, min: control.min, max: control.max, step: control.step });
@@ -200,12 +203,12 @@
       const changed = () => {
         const v = control.kind === "checkbox" ? input.checked : control.kind === "range" ? Number(input.value) : input.value;
         this.values[control.id] = v;
-        shown.textContent = String(v);
+        shown.textContent = say("page-number", { value: v });
         this.showControls();
         this.render();
       };
       input.addEventListener(control.kind === "range" ? "input" : "change", changed);
-      const label = element("label", { className: "live-control" }, `${say(control.label)} `, input);
+      const label = element("label", { className: "live-control" }, `${labelOf(control.label)} `, input);
       if (control.kind === "range") label.append(" ", shown);
       label.liveControl = control;
       this.inputs.push(label);
@@ -247,7 +250,7 @@
       this.describe(0);
       this.pending = { passes, bands: Math.ceil(this.size / BAND), done: 0, rays: 0, started: performance.now() };
       this.edited = this.edits();
-      this.status(`${say("rendering")} ${this.stage.name}…`);
+      this.status(say("page-rendering", { stage: this.stage.name }));
       const count = this.workers.length;
       this.workers.forEach((worker, i) => {
         const bands = [];
@@ -269,16 +272,15 @@
     describe(samples) {
       const set = this.inputs.filter((label) => !label.hidden).map((label) => {
         const input = label.querySelector("[data-control]");
-        const value = input.type === "checkbox" ? say(input.checked ? "on" : "off")
-          : input.tagName === "SELECT" ? input.selectedOptions[0].textContent : input.value;
-        return `${say(label.liveControl.label)}${french ? "\u00a0" : ""}: ${value}`;
+        const value = input.type === "checkbox" ? say(input.checked ? "page-on" : "page-off")
+          : input.tagName === "SELECT" ? input.selectedOptions[0].textContent : say("page-number", { value: Number(input.value) });
+        return say("page-setting", { control: labelOf(label.liveControl.label), value });
       });
-      if (this.setup.orbit) set.push(`${say("turned by")} ${Math.round(this.azimuth)} ${say("degrees")}`);
-      const done = samples ? `${samples} ${say(samples > 1 ? "samples per pixel" : "sample per pixel")}`
-        : say("rendering…");
-      const title = french ? this.stage.name : `${this.stage.name}, ${this.stage.title}`;
-      this.canvas.setAttribute("aria-label", `${say("session")} ${this.session}, ${say("stage")} ${title}; ${set.join("; ")}; ${done}`
-        + (this.setup.orbit ? `. ${say("Arrow keys turn the camera, as dragging does.")}` : ""));
+      if (this.setup.orbit) set.push(say("page-turned", { degrees: Math.round(this.azimuth) }));
+      const done = samples ? say("page-samples-done", { samples }) : say("page-not-done");
+      this.canvas.setAttribute("aria-label", say(this.setup.orbit ? "page-image-orbit" : "page-image", {
+        session: this.session, stage: say("page-stage-option", { stage: this.stage.name, title: this.stage.title }),
+        settings: set.join(say("page-separator")), done }));
     }
 
     /** One worker finished a pass; when all have, the pass's time is shown. */
@@ -292,15 +294,12 @@
       const first = message.pass === 0;
       if (first) this.root.dataset.firstMs = Math.round(ms);
       this.functions.textContent = message.functions.join(", ");
-      this.functionsTitle.textContent = say(this.values.fast ? "the fast engine's function that made this image (beyond the course)"
-        : "the course functions this image ran");
+      this.functionsTitle.textContent = say(this.values.fast ? "page-functions-fast" : "page-functions-course");
       const last = message.pass === p.passes.length - 1;
       if (still && last) for (const [pixels, first] of this.held) this.canvas.getContext("2d").putImageData(pixels, 0, first);
       if (last || !still) this.describe(samples);
-      const per = say(samples > 1 ? "samples per pixel" : "sample per pixel");
-      const text = `${this.stage.name}, ${this.size} × ${this.size}${french ? "\u00a0" : ""}: ${samples} ${per} ${say("in")} ${duration(ms)}`;
-      const workers = `${this.workers.length} ${say("workers")}`;
-      this.status(last ? `${text} (${workers})` : `${text}${french ? "\u00a0" : ""}; ${say("refining…")}`, last ? "done" : "working");
+      const pass = { stage: this.stage.name, size: this.size, samples, time: duration(ms), workers: this.workers.length };
+      this.status(say(last ? "page-pass-done" : "page-pass-refining", pass), last ? "done" : "working");
       if (!last) return;
       this.root.dataset.totalMs = Math.round(ms);
       this.root.dataset.edits = JSON.stringify(this.edited);
@@ -315,8 +314,8 @@
       this.times[this.timesKey] = { search, fast, ms, samples, size: this.size };
       if (fast) {
         this.costCanvas.getContext("2d").clearRect(0, 0, this.size, this.size);
-        this.costCaption.textContent = say("cost: counted for the course's searches only");
-        this.costCanvas.setAttribute("aria-label", `${say("the cost image")}, ${this.costCaption.textContent}`);
+        this.costCaption.textContent = say("page-cost-fast");
+        this.costCanvas.setAttribute("aria-label", say("page-cost-image", { caption: this.costCaption.textContent }));
         this.showTimes();
         return;
       }
@@ -328,20 +327,23 @@
       this.costCanvas.height = message.height;
       const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, message.height);
       this.costCanvas.getContext("2d").putImageData(pixels, 0, 0);
-      this.costCaption.textContent = `${say("cost")}${french ? "\u00a0" : ""}: ${number(message.mean, 1)} ${say("tests per camera ray on average")}`;
-      this.costCanvas.setAttribute("aria-label", `${say("the cost image")}, ${this.costCaption.textContent}`);
+      this.costCaption.textContent = say("page-cost-mean", { mean: message.mean });
+      this.costCanvas.setAttribute("aria-label", say("page-cost-image", { caption: this.costCaption.textContent }));
       this.times[this.timesKey].cost = message.mean;
       this.showTimes();
     }
 
     showTimes() {
-      const name = (t) => say(meshes.find((m) => m[0] === t.search)[1]) + (t.fast ? `, ${say("fast engine")}` : "");
+      const name = (t) => {
+        const search = say(meshes.find((m) => m[0] === t.search)[1]);
+        return t.fast ? say("page-times-fast", { search }) : search;
+      };
       const rows = Object.values(this.times).map((t) => element("tr", {},
         element("td", { textContent: name(t) }),
-        element("td", { textContent: `${duration(t.ms)} (${t.samples} ${say("samples")}, ${t.size} × ${t.size})` }),
-        element("td", { textContent: t.cost === undefined ? "" : `${number(t.cost, 1)} ${say("tests per camera ray")}` })));
-      const head = (text) => element("th", { scope: "col", textContent: say(text) });
-      this.timesTable.replaceChildren(element("tr", {}, head("search"), head("time"), head("cost")), ...rows);
+        element("td", { textContent: say("page-times-time", { time: duration(t.ms), samples: t.samples, size: t.size }) }),
+        element("td", { textContent: t.cost === undefined ? "" : say("page-times-cost", { cost: t.cost }) })));
+      const head = (id) => element("th", { scope: "col", textContent: say(id) });
+      this.timesTable.replaceChildren(element("tr", {}, head("page-times-search"), head("page-times-duration"), head("page-times-cost-head")), ...rows);
     }
 
     /** Session 7: dragging the image (by mouse, pen or finger) turns the camera
@@ -373,10 +375,10 @@
       this.azimuth += azimuth;
       this.values.plunge = Math.round(Math.max(-10, Math.min(80, this.values.plunge + plunge)));
       const input = this.controls.querySelector('[data-control="plunge"]');
-      if (input) { input.value = this.values.plunge; input.shown.textContent = String(this.values.plunge); }
+      if (input) { input.value = this.values.plunge; input.shown.textContent = say("page-number", { value: this.values.plunge }); }
       this.render();
     }
   }
 
-  startEach(".live-demo[data-session]", "the live demo", (root) => { root.liveDemo = new LiveDemo(root); });
+  startEach(".live-demo[data-session]", (root) => { root.liveDemo = new LiveDemo(root); });
 })();
