@@ -1,5 +1,6 @@
 //! The catalogue: the Fluent files of each language, read once, and each message
-//! formatted with its arguments.
+//! formatted with its arguments. The library's messages are read from [`FILES`];
+//! a program with messages of its own reads them beside those into a [`Catalogue`].
 //!
 //! A message is named by an id (`check-matches`), or an id and an attribute
 //! (`mistake-no-gamma.hint`), and given its arguments by name:
@@ -8,6 +9,7 @@
 use std::sync::OnceLock;
 
 use fluent_bundle::concurrent::FluentBundle;
+use fluent_bundle::types::{FluentNumber, FluentNumberOptions};
 use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
 use unic_langid::LanguageIdentifier;
 
@@ -39,63 +41,105 @@ pub const FILES: &[(Language, &[(&str, &str)])] = &[
     ),
 ];
 
-/// Whether the catalogue of `language` has the message `id` (or `id.attribute`).
-pub fn has(language: Language, id: &str) -> bool {
-    let (name, attribute) = id.split_once('.').map_or((id, None), |(n, a)| (n, Some(a)));
-    let message = bundle(language).get_message(name);
-    message.is_some_and(|m| attribute.is_none_or(|a| m.get_attribute(a).is_some()))
+/// The messages of one language, read from its files: the library's ([`FILES`]),
+/// and any a program adds (the exercises' checklist adds its own).
+pub struct Catalogue {
+    /// Its language.
+    language: Language,
+    /// Fluent's bundle of its files' messages.
+    bundle: FluentBundle<FluentResource>,
 }
 
-/// The message `id` (or `id.attribute`) in `language`, with `arguments`. A message
-/// missing from the catalogue is written as its id, which the catalogue's tests
-/// make sure never happens.
-pub fn say(language: Language, id: &str, arguments: &[(&str, Argument)]) -> String {
-    let bundle = bundle(language);
-    let (name, attribute) = id.split_once('.').map_or((id, None), |(n, a)| (n, Some(a)));
-    let message = bundle.get_message(name);
-    let pattern = message.and_then(|m| match attribute {
-        None => m.value(),
-        Some(attribute) => m.get_attribute(attribute).map(|a| a.value()),
-    });
-    let Some(pattern) = pattern else {
-        debug_assert!(false, "{id}: no such message in {language:?}");
-        return id.to_owned();
-    };
-    let arguments: FluentArgs = arguments.iter().cloned().collect();
-    let mut errors = Vec::new();
-    let text = bundle.format_pattern(pattern, Some(&arguments), &mut errors);
-    debug_assert!(errors.is_empty(), "{id} in {language:?}: {errors:?}");
-    text.into_owned()
-}
-
-/// The catalogue of `language`, read on first use.
-fn bundle(language: Language) -> &'static FluentBundle<FluentResource> {
-    static BUNDLES: [OnceLock<FluentBundle<FluentResource>>; 2] =
-        [OnceLock::new(), OnceLock::new()];
-    BUNDLES[language as usize].get_or_init(|| read(language))
-}
-
-/// Reads the files of `language` into one bundle. Messages are written as they are,
-/// without Unicode's direction marks around the arguments (English and French both
-/// run left to right), with Fluent's functions (`NUMBER`), and numbers written by
-/// [`numbers::write`].
-fn read(language: Language) -> FluentBundle<FluentResource> {
-    let code: LanguageIdentifier = language.code().parse().expect("a language code");
-    let mut bundle = FluentBundle::new_concurrent(vec![code]);
-    bundle.set_use_isolating(false);
-    bundle.set_formatter(Some(numbers::write));
-    bundle
-        .add_builtins()
-        .expect("Fluent's functions (NUMBER) added once");
-    for (file, text) in files(language) {
-        let resource = FluentResource::try_new(text.to_string()).unwrap_or_else(|(_, errors)| {
-            panic!("messages/{}/{file}: {errors:?}", language.code())
-        });
+impl Catalogue {
+    /// Reads `files` (name and text) of `language` into one catalogue. Messages are
+    /// written as they are, without Unicode's direction marks around the arguments
+    /// (English and French both run left to right), with Fluent's functions
+    /// (`NUMBER`), and numbers written by [`numbers::write`]. The files are the
+    /// program's own, compiled in and held by the catalogue's tests: one that is not
+    /// Fluent, or repeats a message, is a bug of the program, and panics.
+    pub fn new(language: Language, files: &[(&str, &str)]) -> Catalogue {
+        let code: LanguageIdentifier = language.code().parse().expect("a language code");
+        let mut bundle = FluentBundle::new_concurrent(vec![code]);
+        bundle.set_use_isolating(false);
+        bundle.set_formatter(Some(numbers::write));
         bundle
-            .add_resource(resource)
-            .unwrap_or_else(|errors| panic!("messages/{}/{file}: {errors:?}", language.code()));
+            .add_builtins()
+            .expect("Fluent's functions (NUMBER) added once");
+        for (file, text) in files {
+            let place = format!("messages/{}/{file}", language.code());
+            let resource = FluentResource::try_new(text.to_string())
+                .unwrap_or_else(|(_, errors)| panic!("{place}: {errors:?}"));
+            bundle
+                .add_resource(resource)
+                .unwrap_or_else(|errors| panic!("{place}: {errors:?}"));
+        }
+        Catalogue { language, bundle }
     }
-    bundle
+
+    /// Whether the catalogue has the message `id` (or `id.attribute`).
+    pub fn has(&self, id: &str) -> bool {
+        let (name, attribute) = split(id);
+        let message = self.bundle.get_message(name);
+        message.is_some_and(|m| attribute.is_none_or(|a| m.get_attribute(a).is_some()))
+    }
+
+    /// The message `id` (or `id.attribute`) with `arguments`. A message missing
+    /// from the catalogue is written as its id, which the catalogue's tests make
+    /// sure never happens.
+    pub fn say(&self, id: &str, arguments: &[(&str, Argument)]) -> String {
+        let (name, attribute) = split(id);
+        let message = self.bundle.get_message(name);
+        let pattern = message.and_then(|m| match attribute {
+            None => m.value(),
+            Some(attribute) => m.get_attribute(attribute).map(|a| a.value()),
+        });
+        let Some(pattern) = pattern else {
+            debug_assert!(false, "{id}: no such message in {:?}", self.language);
+            return id.to_owned();
+        };
+        let arguments: FluentArgs = arguments.iter().cloned().collect();
+        let mut errors = Vec::new();
+        let text = self
+            .bundle
+            .format_pattern(pattern, Some(&arguments), &mut errors);
+        debug_assert!(errors.is_empty(), "{id} in {:?}: {errors:?}", self.language);
+        text.into_owned()
+    }
+}
+
+/// A message's id and attribute: `mistake-no-gamma.hint` is `mistake-no-gamma` and
+/// `hint`.
+fn split(id: &str) -> (&str, Option<&str>) {
+    id.split_once('.').map_or((id, None), |(n, a)| (n, Some(a)))
+}
+
+/// Whether the library's catalogue of `language` has the message `id`.
+pub fn has(language: Language, id: &str) -> bool {
+    library(language).has(id)
+}
+
+/// The message `id` of the library's catalogue in `language`, with `arguments`.
+pub fn say(language: Language, id: &str, arguments: &[(&str, Argument)]) -> String {
+    library(language).say(id, arguments)
+}
+
+/// A number written with exactly `decimals` decimals and no digit grouping, as
+/// the message's language writes it (`0.50`, `0,50`): for figures whose digits
+/// the program chose.
+pub fn decimals(value: f64, decimals: usize) -> Argument<'static> {
+    let options = FluentNumberOptions {
+        minimum_fraction_digits: Some(decimals),
+        maximum_fraction_digits: Some(decimals),
+        use_grouping: false,
+        ..FluentNumberOptions::default()
+    };
+    FluentValue::Number(FluentNumber::new(value, options))
+}
+
+/// The library's catalogue of `language`, read on first use.
+fn library(language: Language) -> &'static Catalogue {
+    static CATALOGUES: [OnceLock<Catalogue>; 2] = [OnceLock::new(), OnceLock::new()];
+    CATALOGUES[language as usize].get_or_init(|| Catalogue::new(language, files(language)))
 }
 
 /// The files of `language`.

@@ -14,7 +14,7 @@ use crate::isolation;
 use crate::known::Outcome;
 use crate::marker::{MarkerLine, parse_marker};
 use crate::say;
-use crate::words::french;
+use crate::words::{message, text};
 
 /// One exercise, as the checklist runs it.
 pub struct Exercise {
@@ -31,9 +31,6 @@ pub struct Exercise {
     pub needs: &'static [&'static str],
     /// The check: known answers.
     pub check: fn() -> Outcome,
-    /// What it computes and the French book's section, for the checklist in French:
-    /// `["la distance rayon-sphère", "séance 1, « Un disque blanc »"]`.
-    pub french: [&'static str; 2],
 }
 
 /// A line's verdict.
@@ -105,8 +102,9 @@ pub fn run(sessions: &[&[Exercise]], filters: &[&str]) -> ExitCode {
     println!(
         "\n{}",
         say!(
-            "checklist: {passed} passed; {failed} failed",
-            "liste de contrôle\u{a0}: {passed} réussis\u{a0}; {failed} en échec"
+            "checklist-checklist-passed-failed",
+            passed = passed,
+            failed = failed
         )
     );
     let last = sessions.last().copied().unwrap_or_default();
@@ -175,8 +173,8 @@ fn check_stages(
                 println!(
                     "    {}",
                     say!(
-                        "exercise {exercise}, further down, fails its known answers: this image may need it right first",
-                        "l'exercice {exercise}, plus bas, échoue sur ses réponses connues\u{a0}: cette image en a peut-être besoin d'abord"
+                        "checklist-exercise-further-down-fails-its-known",
+                        exercise = exercise
                     )
                 );
             }
@@ -186,10 +184,7 @@ fn check_stages(
         if let Some(look) = look_again(&verdict, verdicts, &used, markers) {
             println!("    {look}");
             let name = stage.name;
-            differing = differing.or(Some(say!(
-                "the stage `{name}`: {look}",
-                "l'étape `{name}`\u{a0}: {look}"
-            )));
+            differing = differing.or(Some(say!("checklist-the-stage", name = name, look = look)));
         }
     }
     (passed, failed, differing)
@@ -223,17 +218,8 @@ fn look_again(
         return None;
     }
     let names: Vec<String> = used.iter().map(|id| describe(id, markers)).collect();
-    Some(if french() {
-        format!(
-            "chaque exercice réussit ses réponses connues\u{a0}: revoyez donc comment l'image se sert de l'exercice {}",
-            names.join("\u{a0}; de l'exercice ")
-        )
-    } else {
-        format!(
-            "every exercise passes its known answers, so look again at how the image uses exercise {}",
-            names.join("; exercise ")
-        )
-    })
+    let exercises = names.join(&say!("checklist-exercise-separator"));
+    Some(say!("checklist-look-again", exercises = exercises))
 }
 
 /// Where the last session stands, for the closing line.
@@ -262,20 +248,28 @@ impl Progress {
         let line = match (self.chosen, next) {
             (Some(chosen), next) => {
                 let next = next
-                    .map(|next| say!("; next: {next}", "\u{a0}; ensuite\u{a0}: {next}"))
+                    .map(|next| say!("checklist-next", next = next))
                     .unwrap_or_default();
                 say!(
-                    "progress: session {session}: exercises the name filter chose: {chosen} of {total}, done: {done}{next}; cargo test without a name checks them all",
-                    "progression\u{a0}: séance {session}\u{a0}: exercices choisis par le filtre de noms\u{a0}: {chosen} sur {total}, faits\u{a0}: {done}{next}\u{a0}; cargo test sans nom les vérifie tous"
+                    "checklist-progress-session-exercises-the-name-filter",
+                    session = session,
+                    chosen = chosen,
+                    total = total,
+                    done = done,
+                    next = next
                 )
             }
             (None, Some(next)) => say!(
-                "progress: session {session}: {done} of {total} exercises done; next: {next}",
-                "progression\u{a0}: séance {session}\u{a0}: {done} exercices faits sur {total}\u{a0}; ensuite\u{a0}: {next}"
+                "checklist-progress-session-of-exercises-done-next",
+                session = session,
+                done = done,
+                total = total,
+                next = next
             ),
             (None, None) => say!(
-                "progress: session {session}: all {total} exercises done",
-                "progression\u{a0}: séance {session}\u{a0}: les {total} exercices sont faits"
+                "checklist-progress-session-all-exercises-done",
+                session = session,
+                total = total
             ),
         };
         println!("{line}");
@@ -393,7 +387,7 @@ fn report(
     markers: &HashMap<String, MarkerLine>,
     earlier: &HashMap<&str, Verdict>,
 ) {
-    let failed_line = || println!("{name} ... {}", say!("FAILED", "ÉCHEC"));
+    let failed_line = || println!("{name} ... {}", say!("checklist-failed"));
     let why = match verdict {
         Verdict::Passed => {
             println!("{name} ... ok");
@@ -407,18 +401,12 @@ fn report(
             if own {
                 println!(
                     "    {}",
-                    say!(
-                        "exercise {stub}: still todo!(); write it",
-                        "exercice {stub}\u{a0}: encore todo!()\u{a0}; à écrire"
-                    )
+                    say!("checklist-exercise-still-todo-write-it", stub = stub)
                 );
             } else {
                 println!(
                     "    {}",
-                    say!(
-                        "needs exercise {stub} first: it is still todo!()",
-                        "il faut d'abord l'exercice {stub}\u{a0}: il est encore todo!()"
-                    )
+                    say!("checklist-needs-exercise-first-it-is-still", stub = stub)
                 );
             }
             return;
@@ -430,10 +418,7 @@ fn report(
             let exercise = describe(e.id, markers);
             println!(
                 "    {}",
-                say!(
-                    "exercise {exercise}: {why}",
-                    "exercice {exercise}\u{a0}: {why}"
-                )
+                say!("checklist-exercise", exercise = exercise, why = why)
             )
         }
         None => println!("    {why}"),
@@ -450,8 +435,8 @@ fn report(
             println!(
                 "    {}",
                 say!(
-                    "exercise {exercise} fails: the image needs it right first",
-                    "l'exercice {exercise} échoue\u{a0}: l'image en a besoin d'abord"
+                    "checklist-exercise-fails-the-image-needs-it",
+                    exercise = exercise
                 )
             );
         }
@@ -461,10 +446,7 @@ fn report(
             let need = describe(need, markers);
             println!(
                 "    {}",
-                say!(
-                    "it calls exercise {need}, which fails too: fix that one first",
-                    "il appelle l'exercice {need}, qui échoue aussi\u{a0}: corrigez d'abord celui-là"
-                )
+                say!("checklist-it-calls-exercise-which-fails-too", need = need)
             );
         }
     }
@@ -479,24 +461,32 @@ fn describe(id: &str, markers: &HashMap<String, MarkerLine>) -> String {
     }
 }
 
-/// The markers in the checklist's language: in French, each exercise's title and
-/// section as its `french` field gives them.
+/// The markers in the checklist's language: each exercise's title and book
+/// section as the catalogue's `exercise-sN-K` gives them (in English, the marker's).
 fn in_language(
     mut markers: HashMap<String, MarkerLine>,
     sessions: &[&[Exercise]],
 ) -> HashMap<String, MarkerLine> {
-    if french() {
-        for e in sessions.iter().flat_map(|s| s.iter()) {
-            let [title, section] = e.french;
-            let marker = MarkerLine {
-                id: e.id.to_owned(),
-                title: title.to_owned(),
-                book: format!("livre, {section}"),
-            };
-            markers.insert(e.id.to_owned(), marker);
+    for e in sessions.iter().flat_map(|s| s.iter()) {
+        if let Some(marker) = markers.get_mut(e.id) {
+            *marker = translated(marker);
         }
     }
     markers
+}
+
+/// A marker with its title and book section in the checklist's language.
+pub fn translated(marker: &MarkerLine) -> MarkerLine {
+    let id = format!("exercise-{}", marker.id.replace('.', "-"));
+    let arguments = [
+        ("title", text(&marker.title)),
+        ("section", text(&marker.book)),
+    ];
+    MarkerLine {
+        id: marker.id.clone(),
+        title: message(&id, &arguments),
+        book: message(&format!("{id}.section"), &arguments),
+    }
 }
 
 /// Where the last panic happened: the checklist prints it beside the message.

@@ -105,21 +105,19 @@ pub fn check(stage: &Stage) -> Outcome {
             .unwrap_or_default();
         let saved = displayed(&film, gamma).save(&yours).is_ok();
         let place = if saved {
-            say!(
-                "; yours is {}",
-                "\u{a0}; votre image est {}",
-                yours.display()
-            )
+            say!("images-yours-is", yours = yours.display())
         } else {
             String::new()
         };
         say!(
-            "the stage `{}` at {} x {} differs from {}{place}: {why}{traced}",
-            "l'étape `{}` en {} x {} diffère de {}{place}\u{a0}: {why}{traced}",
-            stage.name,
-            film.width,
-            film.height,
-            reference.display()
+            "images-the-stage-at-x-differs-from",
+            stage_name = stage.name,
+            film_width = film.width,
+            film_height = film.height,
+            reference = reference.display(),
+            place = place,
+            why = why,
+            traced = traced
         )
     })
 }
@@ -132,12 +130,13 @@ fn compare_exact(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Outcome
     }
     let (worst, at) = worst_pixel(yours, reference);
     let mut why = say!(
-        "{} of {} pixels differ by more than {TOLERANCE} display levels (the most, {worst} levels, at column {}, row {})",
-        "{} pixels sur {} diffèrent de plus de {TOLERANCE} niveaux d'affichage (l'écart maximal, {worst} niveaux, en colonne {}, ligne {})",
-        outcome.differs.iter().filter(|d| **d).count(),
-        outcome.differs.len(),
-        at.0,
-        at.1
+        "images-of-pixels-differ-by-more-than",
+        d_count = outcome.differs.iter().filter(|d| **d).count(),
+        outcome_differs = outcome.differs.len(),
+        at = at.0,
+        at2 = at.1,
+        TOLERANCE = TOLERANCE,
+        worst = worst
     );
     if let Some(hint) = flip_hint(yours, reference).or_else(|| gamma_hint(yours, reference, gamma))
     {
@@ -165,10 +164,9 @@ fn compare_noisy(yours: &Film, reference: &Linear, settings: &Settings) -> Outco
         return Ok(());
     }
     let mut why = say!(
-        "{} of {} blocks of 8 x 8 pixels differ beyond the noise",
-        "{} blocs de 8 × 8 pixels sur {} diffèrent au-delà du bruit",
-        outcome.differs.iter().filter(|d| **d).count(),
-        outcome.differs.len()
+        "images-of-blocks-of-8-x-8",
+        d_count = outcome.differs.iter().filter(|d| **d).count(),
+        outcome_differs = outcome.differs.len()
     );
     let shown = displayed(yours, gamma);
     let reference_shown = to_rgb8(reference, gamma);
@@ -182,7 +180,7 @@ fn compare_noisy(yours: &Film, reference: &Linear, settings: &Settings) -> Outco
 
 /// `; hint`, a hint after what differs, in the checklist's language.
 fn then(hint: &str) -> String {
-    say!("; {hint}", "\u{a0}; {hint}")
+    say!("images-message", hint = hint)
 }
 
 /// The largest difference of a channel, and where.
@@ -203,15 +201,9 @@ fn flip_hint(yours: &RgbImage, reference: &RgbImage) -> Option<String> {
     let upside_down = image::imageops::flip_vertical(yours);
     let mirrored = image::imageops::flip_horizontal(yours);
     if !compare_pixels(&upside_down, reference, 2 * TOLERANCE).image_differs {
-        Some(say!(
-            "it is the reference upside down: row 0 is the top of the image, so the pixel's height counts from the bottom, i = H - 1 - row",
-            "l'image est la référence à l'envers\u{a0}: la ligne 0 (row) est le haut de l'image, donc la hauteur du pixel se compte depuis le bas, i = H - 1 - row"
-        ))
+        Some(say!("images-it-is-the-reference-upside-down"))
     } else if !compare_pixels(&mirrored, reference, 2 * TOLERANCE).image_differs {
-        Some(say!(
-            "it is the reference mirrored left to right: column j grows to the right, x = j - W/2 + 0.5",
-            "l'image est la référence inversée de gauche à droite\u{a0}: la colonne j croît vers la droite, x = j - W/2 + 0,5"
-        ))
+        Some(say!("images-it-is-the-reference-mirrored-left"))
     } else {
         None
     }
@@ -234,14 +226,11 @@ fn gamma_hint(yours: &RgbImage, reference: &RgbImage, gamma: Real) -> Option<Str
     if !compare_pixels(yours, &remap(1.0), 2 * TOLERANCE).image_differs {
         let gamma = decimal(gamma.to_string());
         Some(say!(
-            "it shows the radiance without the display's gamma: a pixel is L^(1/gamma), here gamma = {gamma}",
-            "l'image montre la luminance sans le gamma de l'écran\u{a0}: un pixel vaut L^(1/gamma), ici gamma = {gamma}"
+            "images-it-shows-the-radiance-without-the",
+            gamma = gamma
         ))
     } else if !compare_pixels(yours, &remap(1.0 / (g * g)), 2 * TOLERANCE).image_differs {
-        Some(say!(
-            "the display's gamma is applied twice: a pixel is L^(1/gamma), once",
-            "le gamma de l'écran est appliqué deux fois\u{a0}: un pixel vaut L^(1/gamma), une seule fois"
-        ))
+        Some(say!("images-the-display-s-gamma-is-applied"))
     } else {
         None
     }
@@ -279,43 +268,36 @@ fn brightness_hint(
     let near = |target: f64| (mean / target - 1.0).abs() < 0.08;
     let pi = std::f64::consts::PI;
     let hint = if near(pi) {
-        say!(
-            "about pi times too bright: a diffuse surface reflects albedo / pi (the BRDF), and the light's power spreads over 4 pi r^2",
-            "l'image est environ pi fois trop claire\u{a0}: une surface diffuse renvoie albédo / pi (la BRDF), et la puissance de la source se répartit sur 4 pi r^2"
-        )
+        say!("images-about-pi-times-too-bright-a")
     } else if near(1.0 / pi) && drawn.bounces {
-        say!(
-            "about pi times too dark: is 1 / pi counted twice, or the cosine-weighted pdf's pi not cancelled?",
-            "l'image est environ pi fois trop sombre\u{a0}: le 1 / pi est-il compté deux fois, ou le pi de la densité de probabilité (pdf) pondérée par le cosinus n'est-il pas simplifié\u{a0}?"
-        )
+        say!("images-about-pi-times-too-dark-is")
     } else if near(1.0 / pi) {
-        say!(
-            "about pi times too dark: is 1 / pi counted twice? A diffuse surface reflects albedo / pi, once",
-            "l'image est environ pi fois trop sombre\u{a0}: le 1 / pi est-il compté deux fois\u{a0}? Une surface diffuse renvoie albédo / pi, une seule fois"
-        )
+        say!("images-about-pi-times-too-dark-is-2")
     } else if drawn.light_samples && (near(2.0) || near(0.5)) {
-        say!(
-            "about twice too bright or too dark: a sample's weight must match the density it was drawn with (a direction in the light's cone: 1 / (2 pi (1 - cos theta_max)); a cosine-weighted bounce: cos(theta) / pi)",
-            "l'image est environ deux fois trop claire ou trop sombre\u{a0}: le poids d'un échantillon doit correspondre à la densité avec laquelle il a été tiré (une direction dans le cône de la source\u{a0}: 1 / (2 pi (1 - cos theta_max))\u{a0}; un rebond pondéré par le cosinus\u{a0}: cos(theta) / pi)"
-        )
+        say!("images-about-twice-too-bright-or-too")
     } else if drawn.bounces && (near(2.0) || near(0.5)) {
-        say!(
-            "about twice too bright or too dark: the weight of a bounce must match how its direction was drawn (for a cosine-weighted direction the cosine and pi cancel, leaving the albedo)",
-            "l'image est environ deux fois trop claire ou trop sombre\u{a0}: le poids d'un rebond doit correspondre à la façon dont sa direction a été tirée (pour une direction pondérée par le cosinus, le cosinus et pi se simplifient, il reste l'albédo)"
-        )
+        say!("images-about-twice-too-bright-or-too-2")
     } else if (mean - 1.0).abs() > 0.05 {
         let percent = format!("{:.0}", (mean - 1.0).abs() * 100.0);
         let [r, g, b] = ratio.map(|x| decimal(format!("{x:.2}")));
         let s = separator();
         return Some(if mean > 1.0 {
             say!(
-                "{percent}% brighter than the reference overall (per channel {r}x, {g}x, {b}x)",
-                "l'image est {percent}\u{a0}% plus claire que la référence dans l'ensemble (par canal ×\u{a0}{r}{s}×\u{a0}{g}{s}×\u{a0}{b})"
+                "images-brighter-than-the-reference-overall-per",
+                percent = percent,
+                r = r,
+                g = g,
+                b = b,
+                s = s
             )
         } else {
             say!(
-                "{percent}% darker than the reference overall (per channel {r}x, {g}x, {b}x)",
-                "l'image est {percent}\u{a0}% plus sombre que la référence dans l'ensemble (par canal ×\u{a0}{r}{s}×\u{a0}{g}{s}×\u{a0}{b})"
+                "images-darker-than-the-reference-overall-per",
+                percent = percent,
+                r = r,
+                g = g,
+                b = b,
+                s = s
             )
         });
     } else {
@@ -323,8 +305,9 @@ fn brightness_hint(
     };
     let mean = decimal(format!("{mean:.2}"));
     Some(say!(
-        "{hint} (brightness against the reference: {mean}x)",
-        "{hint} (luminosité par rapport à la référence\u{a0}: {mean}x)"
+        "images-brightness-against-the-reference-x",
+        hint = hint,
+        mean = mean
     ))
 }
 
@@ -354,7 +337,7 @@ fn read_8(path: &Path) -> Result<RgbImage, String> {
 
 /// A reference that cannot be read: `path: error`.
 fn unreadable(path: &Path, error: &image::ImageError) -> String {
-    say!("{}: {error}", "{}\u{a0}: {error}", path.display())
+    say!("images-message-2", path = path.display(), error = error)
 }
 
 /// A linear picture as the display shows it, 8 bits.

@@ -50,10 +50,7 @@ pub fn verdict_of(name: &str) -> Verdict {
         let _ = child.kill();
         let _ = child.wait();
         let seconds = TIME.as_secs();
-        return Verdict::Failed(say!(
-            "it did not end within {seconds} s: is there a loop that never stops?",
-            "il ne s'est pas terminé en {seconds}\u{a0}s\u{a0}: une boucle ne s'arrête peut-être jamais"
-        ));
+        return Verdict::Failed(say!("isolation-it-did-not-end-within-s", seconds = seconds));
     }
     let (out, err) = (
         out.join().unwrap_or_default(),
@@ -100,23 +97,17 @@ fn decode(out: &str) -> Option<Verdict> {
 /// standard error: a stack that overflowed, memory that ran out, or the last line.
 fn why_it_stopped(err: &str) -> String {
     if err.contains("has overflowed its stack") {
-        say!(
-            "it never ended: the stack overflowed, as a recursion without an end makes it (does each call go one level deeper, towards a last level where it stops?)",
-            "il ne s'est jamais terminé\u{a0}: la pile a débordé, comme avec une récursion sans fin (chaque appel descend-il d'un niveau, vers un dernier niveau où il s'arrête\u{a0}?)"
-        )
+        say!("isolation-it-never-ended-the-stack-overflowed")
     } else if err.contains("memory allocation of") {
         let gib = MEMORY >> 30;
-        say!(
-            "it asked for more than {gib} GiB of memory: a loop or a recursion without an end? (a hierarchy must stop splitting, each node holding fewer triangles than its parent)",
-            "il a demandé plus de {gib}\u{a0}Gio de mémoire\u{a0}: une boucle ou une récursion sans fin\u{a0}? (une hiérarchie doit cesser de se diviser, chaque nœud ayant moins de triangles que son parent)"
-        )
+        say!("isolation-it-asked-for-more-than-gib", gib = gib)
     } else {
         let last = err
             .lines()
             .rev()
             .find(|l| !l.trim().is_empty())
             .unwrap_or("");
-        say!("it stopped: {last}", "il s'est arrêté\u{a0}: {last}")
+        say!("isolation-it-stopped", last = last)
     }
 }
 

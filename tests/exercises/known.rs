@@ -34,8 +34,11 @@ pub fn close_vec(what: &str, gave: Vec3, expected: Vec3, tolerance: Real) -> Out
 fn gave_expected(what: &str, gave: &str, expected: &str, tolerance: Real) -> String {
     let tolerance = decimal(tolerance.to_string());
     say!(
-        "{what}: gave {gave}, expected {expected} (within {tolerance})",
-        "{what}\u{a0}: obtenu {gave}, attendu {expected} (à {tolerance} près)"
+        "known-gave-expected-within",
+        what = what,
+        gave = gave,
+        expected = expected,
+        tolerance = tolerance
     )
 }
 
@@ -68,17 +71,15 @@ pub fn same_distance(gave: Option<Real>, expected: Option<Real>, tolerance: Real
 
 /// An optional distance as the book writes it: `t = 4`, or `no hit`.
 pub fn maybe(t: Option<Real>) -> String {
-    t.map_or(say!("no hit", "aucune intersection"), |t| {
-        format!("t = {}", num(t))
-    })
+    t.map_or(say!("known-no-hit"), |t| format!("t = {}", num(t)))
 }
 
 /// A nearest hit (its distance and object) as the book writes it: `sphere 1 at
 /// t = 4`, or `no hit`.
 pub fn nearest(hit: Option<(Real, usize)>) -> String {
-    hit.map_or(say!("no hit", "aucune intersection"), |(t, i)| {
+    hit.map_or(say!("known-no-hit"), |(t, i)| {
         let t = num(t);
-        say!("sphere {i} at t = {t}", "sphère {i} en t = {t}")
+        say!("known-sphere-at-t", i = i, t = t)
     })
 }
 

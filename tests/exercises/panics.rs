@@ -5,27 +5,30 @@
 
 use std::path::Path;
 
-use crate::SESSIONS;
+use crate::checklist::translated;
 use crate::marker::{MarkerLine, parse_marker};
 use crate::say;
-use crate::words::french;
 
 /// A line of the failure of a panic at `place` (`src/geometry/sphere.rs:42`) with
 /// `message`: the exercise whose function holds that line, if one does, and the
 /// rule its message points to.
 pub fn explain(message: &str, place: &str) -> String {
     let rule = rule(message)
-        .map(|r| say!("; {r}", "\u{a0}; {r}"))
+        .map(|r| say!("panics-message", r = r))
         .unwrap_or_default();
     match exercise_at(place) {
         Some(marker) => say!(
-            "panicked in exercise {}, at {place}: {message}{rule}",
-            "panique dans l'exercice {}, en {place}\u{a0}: {message}{rule}",
-            title(&marker)
+            "panics-panicked-in-exercise-at",
+            title_marker = title(&marker),
+            place = place,
+            message = message,
+            rule = rule
         ),
         None => say!(
-            "panicked: {message} ({place}){rule}",
-            "panique\u{a0}: {message} ({place}){rule}"
+            "panics-panicked",
+            message = message,
+            place = place,
+            rule = rule
         ),
     }
 }
@@ -33,12 +36,8 @@ pub fn explain(message: &str, place: &str) -> String {
 /// The marker's exercise with its title in the checklist's language: `s1.2, the
 /// ray-sphere distance`.
 fn title(marker: &MarkerLine) -> String {
-    let id = &marker.id;
-    let exercise = SESSIONS.iter().flat_map(|s| s.iter()).find(|e| e.id == id);
-    match exercise {
-        Some(e) if french() => format!("{id}, {}", e.french[0]),
-        _ => format!("{id}, {}", marker.title),
-    }
+    let marker = translated(marker);
+    format!("{}, {}", marker.id, marker.title)
 }
 
 /// The exercise whose function holds the line of `place`, read from the crate's
@@ -76,30 +75,15 @@ fn function_end(lines: &[&str], marker: usize) -> Option<usize> {
 /// The rule a panic's message points to, in the checklist's language.
 fn rule(message: &str) -> Option<String> {
     if message.contains("subtract with overflow") {
-        Some(say!(
-            "an unsigned integer (u32, usize) went below 0: convert to Real before subtracting, since the chapter computes in real numbers",
-            "un entier non signé (u32, usize) est passé sous 0\u{a0}: convertissez en Real avant de soustraire, car le chapitre calcule en nombres réels"
-        ))
+        Some(say!("panics-an-unsigned-integer-u32-usize-went"))
     } else if message.contains("with overflow") {
-        Some(say!(
-            "an integer went past its largest value: compute in Real",
-            "un entier a dépassé sa plus grande valeur\u{a0}: calculez en Real"
-        ))
+        Some(say!("panics-an-integer-went-past-its-largest"))
     } else if message.contains("index out of bounds") {
-        Some(say!(
-            "an index past the end of a list: a list of n things is indexed from 0 to n - 1",
-            "un indice au-delà de la fin d'une liste\u{a0}: une liste de n éléments s'indexe de 0 à n - 1"
-        ))
+        Some(say!("panics-an-index-past-the-end-of"))
     } else if message.contains("on a `None` value") {
-        Some(say!(
-            "unwrap() on None: None (no hit, say) is a case of its own, to handle with match or if let",
-            "unwrap() sur None\u{a0}: None (l'absence d'intersection, par exemple) est un cas à part entière, à traiter avec match ou if let"
-        ))
+        Some(say!("panics-unwrap-on-none-none-no-hit"))
     } else if message.contains("divide by zero") {
-        Some(say!(
-            "an integer division by 0: divide in Real, or test the divisor",
-            "une division entière par 0\u{a0}: divisez en Real, ou testez le diviseur"
-        ))
+        Some(say!("panics-an-integer-division-by-0-divide"))
     } else {
         None
     }

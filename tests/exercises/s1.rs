@@ -24,10 +24,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "white-disk",
         needs: &[],
         check: pixel_direction,
-        french: [
-            "le rayon de la caméra à travers un pixel",
-            "séance 1, «\u{a0}Un disque blanc\u{a0}»",
-        ],
     },
     Exercise {
         id: "s1.2",
@@ -35,10 +31,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "white-disk",
         needs: &[],
         check: sphere_distance,
-        french: [
-            "la distance rayon-sphère",
-            "séance 1, «\u{a0}Un disque blanc\u{a0}»",
-        ],
     },
     Exercise {
         id: "s1.3",
@@ -46,10 +38,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "spheres",
         needs: &["s1.2"],
         check: nearest_sphere,
-        french: [
-            "l'intersection la plus proche",
-            "séance 1, «\u{a0}Plusieurs sphères\u{a0}»",
-        ],
     },
     Exercise {
         id: "s1.4",
@@ -57,10 +45,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "shading",
         needs: &[],
         check: lambert,
-        french: [
-            "l'ombrage de Lambert avec la décroissance de la lumière",
-            "séance 1, «\u{a0}Ombrage de Lambert\u{a0}»",
-        ],
     },
 ];
 
@@ -73,36 +57,36 @@ fn pixel_direction() -> Outcome {
         (
             (0, 0),
             Vec3::new(-1.5, 0.5, -1.0),
-            ["the top left", "en haut à gauche"],
+            say!("s1-case-the-top-left"),
         ),
         (
             (1, 3),
             Vec3::new(1.5, -0.5, -1.0),
-            ["the bottom right", "en bas à droite"],
+            say!("s1-case-the-bottom-right"),
         ),
         (
             (0, 2),
             Vec3::new(0.5, 0.5, -1.0),
-            [
-                "the top, right of the centre",
-                "en haut et à droite du centre",
-            ],
+            say!("s1-case-the-top-right-of-the-centre"),
         ),
     ];
-    for ((row, column), expected, [place, lieu]) in cases {
+    for ((row, column), expected, place) in cases {
         let gave = camera.pixel_direction(row, column);
         ensure(gave.length() > 0.0 && gave.is_finite(), || {
             say!(
-                "pixel (row {row}, column {column}) gave the direction {}",
-                "le pixel (ligne {row}, colonne {column}) donne la direction {}",
-                vec(gave)
+                "s1-pixel-row-column-gave-the-direction",
+                vec_gave = vec(gave),
+                row = row,
+                column = column
             )
         })?;
         // Any length is right: only the direction matters.
         close_vec(
             &say!(
-                "the direction through pixel (row {row}, column {column}), {place} of a 4 x 2 image with a 90-degree field of view, normalised",
-                "la direction à travers le pixel (ligne {row}, colonne {column}), {lieu} d'une image de 4 x 2 avec un champ de vision de 90 degrés, normalisée"
+                "s1-the-direction-through-pixel-row-column",
+                row = row,
+                column = column,
+                place = place
             ),
             gave.normalize(),
             expected.normalize(),
@@ -121,18 +105,16 @@ fn in_pixel_units() -> Outcome {
     let camera = Camera::new(Vec3::ZERO, PI / 3.0, 8, 4);
     let corner = camera.pixel_direction(0, 0);
     let steps = [
-        (
-            (0, 1),
-            Vec3::X,
-            ["one pixel to the right", "un pixel à droite"],
-        ),
-        ((1, 0), -Vec3::Y, ["one pixel down", "un pixel plus bas"]),
+        ((0, 1), Vec3::X, say!("s1-case-one-pixel-to-the-right")),
+        ((1, 0), -Vec3::Y, say!("s1-case-one-pixel-down")),
     ];
-    for ((row, column), expected, [step, pas]) in steps {
+    for ((row, column), expected, step) in steps {
         close_vec(
             &say!(
-                "pixel_direction({row}, {column}) - pixel_direction(0, 0), {step} in an 8 x 4 image with a 60-degree field of view (the direction is in pixel units: session 3 adds its jitter, in pixels, to it)",
-                "pixel_direction({row}, {column}) - pixel_direction(0, 0), {pas} dans une image de 8 x 4 avec un champ de vision de 60 degrés (la direction est en unités de pixel\u{a0}: la séance 3 lui ajoute sa perturbation, en pixels)"
+                "s1-pixel-direction-pixel-direction-0-0",
+                row = row,
+                column = column,
+                step = step
             ),
             camera.pixel_direction(row, column) - corner,
             expected,
@@ -162,38 +144,35 @@ fn sphere_distance() -> Outcome {
     let z = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
         (
-            ["in front", "devant l'œil"],
+            say!("s1-case-in-front"),
             Vec3::new(0.0, 0.0, -5.0),
             1.0,
             z,
             Some(4.0),
         ),
         (
-            ["around the eye", "autour de l'œil"],
+            say!("s1-case-around-the-eye"),
             Vec3::ZERO,
             2.0,
             z,
             Some(2.0),
         ),
         (
-            ["behind the eye", "derrière l'œil"],
+            say!("s1-case-behind-the-eye"),
             Vec3::new(0.0, 0.0, 5.0),
             1.0,
             z,
             None,
         ),
         (
-            [
-                "beside the ray, 2.24 from its line",
-                "à côté du rayon, à 2,24 de la droite qui le porte",
-            ],
+            say!("s1-case-beside-the-ray-2-24-from"),
             Vec3::new(0.0, 0.0, -5.0),
             1.0,
             Vec3::new(0.0, 0.5, -1.0),
             None,
         ),
         (
-            ["on an oblique ray", "sur un rayon oblique"],
+            say!("s1-case-on-an-oblique-ray"),
             Vec3::new(0.0, 3.0, -4.0),
             1.0,
             Vec3::new(0.0, 0.6, -0.8),
@@ -206,20 +185,22 @@ fn sphere_distance() -> Outcome {
         ("Sphere::intersect", Sphere::intersect),
     ];
     for (test, intersect) in tests {
-        for ([what, quoi], centre, radius, direction, expected) in cases {
+        for (what, centre, radius, direction, expected) in cases.clone() {
             let ray = Ray::new(Vec3::ZERO, direction);
             let gave = intersect(&sphere(centre, radius), &ray);
             let right = same_distance(gave, expected, 1e-4);
             ensure(right, || {
                 let radius = decimal(radius.to_string());
                 say!(
-                    "{test}: a sphere of radius {radius} at {} {what}, the ray from {} along {}: gave {}, expected {}",
-                    "{test}\u{a0}: une sphère de rayon {radius} en {}, {quoi}, le rayon issu de {} selon {}\u{a0}: obtenu {}, attendu {}",
-                    vec(centre),
-                    vec(Vec3::ZERO),
-                    vec(ray.direction),
-                    maybe(gave),
-                    maybe(expected)
+                    "s1-a-sphere-of-radius-at-the",
+                    vec_centre = vec(centre),
+                    vec = vec(Vec3::ZERO),
+                    ray_direction = vec(ray.direction),
+                    maybe_gave = maybe(gave),
+                    maybe_expected = maybe(expected),
+                    test = test,
+                    radius = radius,
+                    what = what
                 )
             })?;
         }
@@ -248,10 +229,10 @@ fn far_sphere() -> Outcome {
     let expected = far - (0.75 as Real).sqrt();
     ensure(same_distance(gave, Some(expected), 0.05), || {
         say!(
-            "Sphere::intersect: a sphere of radius 1 at (0.5, 0, -{far}), the ray from the origin along -z: gave {}, expected {} (the textbook discriminant loses 0.75 to rounding next to {far}^2: compute it as R^2 - |s - (s.d) d|^2)",
-            "Sphere::intersect\u{a0}: une sphère de rayon 1 en (0,5\u{a0}; 0\u{a0}; -{far}), le rayon issu de l'origine selon -z\u{a0}: obtenu {}, attendu {} (le discriminant du manuel perd 0,75 dans l'arrondi à côté de {far}^2\u{a0}: calculez-le comme R^2 - |s - (s.d) d|^2)",
-            maybe(gave),
-            maybe(Some(expected))
+            "s1-sphere-intersect-a-sphere-of-radius",
+            maybe_gave = maybe(gave),
+            maybe_expected = maybe(Some(expected)),
+            far = far
         )
     })
 }
@@ -279,10 +260,9 @@ fn nearest_sphere() -> Outcome {
         gave.is_some_and(|(t, i)| i == 1 && (t - 4.0).abs() < 1e-4),
         || {
             say!(
-                "spheres at z = -10, -5 and 3 (numbers 0, 1, 2), the ray from the origin along -z: gave {}, expected {}",
-                "des sphères en z = -10, -5 et 3 (numéros 0, 1, 2), le rayon issu de l'origine selon -z\u{a0}: obtenu {}, attendu {}",
-                nearest(gave),
-                nearest(Some((4.0, 1)))
+                "s1-spheres-at-z-10-5-and",
+                nearest_gave = nearest(gave),
+                nearest = nearest(Some((4.0, 1)))
             )
         },
     )?;
@@ -290,10 +270,9 @@ fn nearest_sphere() -> Outcome {
     let gave = room.nearest_sphere(&up);
     ensure(gave.is_none(), || {
         say!(
-            "the same spheres, the ray along +y: gave {}, expected {}",
-            "les mêmes sphères, le rayon selon +y\u{a0}: obtenu {}, attendu {}",
-            nearest(gave),
-            nearest(None)
+            "s1-the-same-spheres-the-ray-along",
+            nearest_gave = nearest(gave),
+            nearest = nearest(None)
         )
     })?;
     generated::nearest_sphere(Scene::nearest_sphere)
@@ -311,45 +290,34 @@ fn lambert() -> Outcome {
     let up = Vec3::new(0.0, 1.0, 0.0);
     let cases = [
         (
-            [
-                "facing the light 10 away",
-                "face à la source, à une distance de 10",
-            ],
+            say!("s1-case-facing-the-light-10-away"),
             Vec3::ZERO,
             up,
             albedo,
         ),
         (
-            ["tilted by 45 degrees", "inclinée de 45 degrés"],
+            say!("s1-case-tilted-by-45-degrees"),
             Vec3::ZERO,
             Vec3::new(1.0, 1.0, 0.0).normalize(),
             albedo / (2.0 as Real).sqrt(),
         ),
         (
-            [
-                "facing the light 20 away",
-                "face à la source, à une distance de 20",
-            ],
+            say!("s1-case-facing-the-light-20-away"),
             Vec3::new(0.0, -10.0, 0.0),
             up,
             albedo / 4.0,
         ),
-        (
-            ["facing away", "dos à la source"],
-            Vec3::ZERO,
-            -up,
-            Colour::ZERO,
-        ),
+        (say!("s1-case-facing-away"), Vec3::ZERO, -up, Colour::ZERO),
     ];
-    for ([what, quoi], point, normal, expected) in cases {
+    for (what, point, normal, expected) in cases {
         close_vec(
             &say!(
-                "albedo {} at {}, normal {}, {what}, under a light of power 400 pi^2 at {}",
-                "albédo {} en {}, normale {}, {quoi}, sous une source de puissance 400 pi^2 en {}",
-                vec(albedo),
-                vec(point),
-                vec(normal),
-                vec(light.position)
+                "s1-albedo-at-normal-under-a-light",
+                vec_albedo = vec(albedo),
+                vec_point = vec(point),
+                vec_normal = vec(normal),
+                light_position = vec(light.position),
+                what = what
             ),
             light.lambert(point, normal, albedo),
             expected,

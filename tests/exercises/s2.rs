@@ -20,7 +20,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "gamma",
         needs: &[],
         check: gamma,
-        french: ["le gamma", "séance 2, «\u{a0}Correction gamma\u{a0}»"],
     },
     Exercise {
         id: "s2.2",
@@ -28,10 +27,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "shadows",
         needs: &[],
         check: spawn,
-        french: [
-            "l'origine décalée d'un nouveau rayon",
-            "séance 2, «\u{a0}Ombres portées\u{a0}»",
-        ],
     },
     Exercise {
         id: "s2.3",
@@ -39,10 +34,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "shadows",
         needs: &["s2.2"],
         check: spawn_towards,
-        french: [
-            "le rayon d'ombre vers la source",
-            "séance 2, «\u{a0}Ombres portées\u{a0}»",
-        ],
     },
     Exercise {
         id: "s2.4",
@@ -50,7 +41,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "mirror",
         needs: &[],
         check: mirror,
-        french: ["la direction réfléchie", "séance 2, «\u{a0}Miroirs\u{a0}»"],
     },
     Exercise {
         id: "s2.5",
@@ -58,10 +48,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "glass",
         needs: &[],
         check: glass,
-        french: [
-            "la réfraction et la réflexion totale interne",
-            "séance 2, «\u{a0}Verre\u{a0}»",
-        ],
     },
 ];
 
@@ -84,8 +70,11 @@ fn gamma() -> Outcome {
         ensure(gave == expected, || {
             let (radiance, gamma) = (decimal(radiance.to_string()), decimal(gamma.to_string()));
             say!(
-                "radiance {radiance} with gamma {gamma}: gave {gave}, expected {expected}",
-                "luminance {radiance} avec un gamma de {gamma}\u{a0}: obtenu {gave}, attendu {expected}"
+                "s2-radiance-with-gamma-gave-expected",
+                radiance = radiance,
+                gamma = gamma,
+                gave = gave,
+                expected = expected
             )
         })?;
     }
@@ -117,15 +106,9 @@ fn hits() -> Vec<(
             .expect("the checks' rays hit their spheres");
         let at = vec(centre);
         let what = if radius > 100.0 {
-            say!(
-                "on a wall, a sphere of radius {radius} at {at}",
-                "sur un mur, une sphère de rayon {radius} en {at}"
-            )
+            say!("s2-on-a-wall-a-sphere-of", radius = radius, at = at)
         } else {
-            say!(
-                "on a sphere of radius {radius} at {at}",
-                "sur une sphère de rayon {radius} en {at}"
-            )
+            say!("s2-on-a-sphere-of-radius-at", radius = radius, at = at)
         };
         (what, ball, ball.hit_at(&ray, t, 0))
     })
@@ -140,33 +123,34 @@ fn spawn() -> Outcome {
         let outward = (hit.point - ball.centre).normalize();
         let out = hit.spawn((outward + Vec3::new(0.0, 0.0, 0.5)).normalize());
         let inward = hit.spawn(-outward);
-        for ([way, sens], ray) in [(["out", "sortant"], out), (["in", "entrant"], inward)] {
+        for (way, ray) in [(say!("s2-case-out"), out), (say!("s2-case-in"), inward)] {
             ensure(ray.origin.distance(hit.point) < 1e-3, || {
                 say!(
-                    "{what}, the ray going {way} starts at {}, {} from the hit point {}: expected a start within 1e-3",
-                    "{what}, le rayon {sens} part de {}, à {} du point d'intersection {}\u{a0}: attendu un départ à moins de 1e-3",
-                    vec(ray.origin),
-                    decimal(ray.origin.distance(hit.point).to_string()),
-                    vec(hit.point)
+                    "s2-the-ray-going-starts-at-from",
+                    ray_origin = vec(ray.origin),
+                    hit_point = decimal(ray.origin.distance(hit.point).to_string()),
+                    hit_point2 = vec(hit.point),
+                    what = what,
+                    way = way
                 )
             })?;
         }
         let again = ball.intersect(&out);
         ensure(again.is_none(), || {
             say!(
-                "{what}, a ray leaving outwards from the hit point meets the sphere again at {}: expected {} (its origin must be pushed off the surface, outwards)",
-                "{what}, un rayon qui quitte le point d'intersection vers l'extérieur rencontre de nouveau la sphère en {}\u{a0}: attendu {} (son origine doit être décalée hors de la surface, vers l'extérieur)",
-                maybe(again),
-                maybe(None)
+                "s2-a-ray-leaving-outwards-from-the",
+                maybe_again = maybe(again),
+                maybe = maybe(None),
+                what = what
             )
         })?;
         let through = ball.intersect(&inward);
         ensure(through.is_some_and(|t| t > 1e-3), || {
             say!(
-                "{what}, a ray going into the sphere from the hit point gave {}: expected the far side, about {} away (its origin must be pushed off the surface, inwards)",
-                "{what}, un rayon qui entre dans la sphère depuis le point d'intersection donne {}, au lieu du côté opposé, à environ {} (son origine doit être décalée hors de la surface, vers l'intérieur)",
-                maybe(through),
-                decimal((2.0 * ball.radius).to_string())
+                "s2-a-ray-going-into-the-sphere",
+                maybe_through = maybe(through),
+                ball_radius = decimal((2.0 * ball.radius).to_string()),
+                what = what
             )
         })?;
     }
@@ -181,29 +165,26 @@ fn spawn_towards() -> Outcome {
         let (ray, distance) = hit.spawn_towards(light);
         close_vec(
             &say!(
-                "{what}, the direction towards a light 13 away along {}",
-                "{what}, la direction vers une source à une distance de 13 selon {}",
-                vec(Vec3::new(3.0, 4.0, 12.0))
+                "s2-the-direction-towards-a-light-13",
+                vec_new = vec(Vec3::new(3.0, 4.0, 12.0)),
+                what = what
             ),
             ray.direction,
             Vec3::new(3.0, 4.0, 12.0) / 13.0,
             1e-4,
         )?;
         close(
-            &say!(
-                "{what}, the distance to that light",
-                "{what}, la distance à cette source"
-            ),
+            &say!("s2-the-distance-to-that-light", what = what),
             distance,
             13.0,
             1e-3,
         )?;
         ensure(ray.origin.distance(hit.point) < 1e-3, || {
             say!(
-                "{what}, the shadow ray starts at {}, not near the hit point {}",
-                "{what}, le rayon d'ombre part de {}, et non près du point d'intersection {}",
-                vec(ray.origin),
-                vec(hit.point)
+                "s2-the-shadow-ray-starts-at-not",
+                ray_origin = vec(ray.origin),
+                hit_point = vec(hit.point),
+                what = what
             )
         })?;
     }
@@ -229,12 +210,7 @@ fn mirror() -> Outcome {
     ];
     for (d, n, expected) in cases {
         close_vec(
-            &say!(
-                "d = {} reflected about N = {}",
-                "d = {} réfléchi par rapport à N = {}",
-                vec(d),
-                vec(n)
-            ),
+            &say!("s2-d-reflected-about-n", vec_d = vec(d), vec = vec(n)),
             reflect(d, n),
             expected,
             1e-5,
@@ -256,34 +232,25 @@ fn glass() -> Outcome {
     let third = 1.0 / 3.0;
     let cases = [
         (
-            [
-                "30 degrees, air into glass",
-                "30 degrés, de l'air vers le verre",
-            ],
+            say!("s2-case-30-degrees-air-into-glass"),
             at(30.0),
             1.0 / 1.5,
             Some(Vec3::new(third, -(8.0 as Real / 9.0).sqrt(), 0.0)),
         ),
         (
-            ["straight in", "en incidence normale"],
+            say!("s2-case-straight-in"),
             at(0.0),
             1.0 / 1.5,
             Some(Vec3::new(0.0, -1.0, 0.0)),
         ),
         (
-            [
-                "45 degrees, glass into air",
-                "45 degrés, du verre vers l'air",
-            ],
+            say!("s2-case-45-degrees-glass-into-air"),
             at(45.0),
             1.5,
             None,
         ),
         (
-            [
-                "40 degrees, glass into air",
-                "40 degrés, du verre vers l'air",
-            ],
+            say!("s2-case-40-degrees-glass-into-air"),
             at(40.0),
             1.5,
             Some(at((1.5 * (40.0 as Real).to_radians().sin())
@@ -291,31 +258,24 @@ fn glass() -> Outcome {
                 .to_degrees())),
         ),
     ];
-    for ([what, quoi], d, eta, expected) in cases {
+    for (what, d, eta, expected) in cases {
         let gave = refract(d, n, eta);
         let right = match (gave, expected) {
             (Some(g), Some(e)) => (g - e).abs().max_element() < 1e-4,
             (None, None) => true,
             _ => false,
         };
-        let show = |v: Option<Vec3>| {
-            v.map_or(
-                say!(
-                    "none (total internal reflection)",
-                    "aucune direction (réflexion totale interne)"
-                ),
-                vec,
-            )
-        };
+        let show = |v: Option<Vec3>| v.map_or(say!("s2-none-total-internal-reflection"), vec);
         ensure(right, || {
             let eta = decimal(eta.to_string());
             say!(
-                "{what}: d = {}, N = {}, eta = n1 / n2 = {eta}: gave {}, expected {}",
-                "{quoi}\u{a0}: d = {}, N = {}, eta = n1 / n2 = {eta}\u{a0}: obtenu {}, attendu {}",
-                vec(d),
-                vec(n),
-                show(gave),
-                show(expected)
+                "s2-d-n-eta-n1-n2-gave",
+                vec_d = vec(d),
+                vec = vec(n),
+                show_gave = show(gave),
+                show_expected = show(expected),
+                what = what,
+                eta = eta
             )
         })?;
     }

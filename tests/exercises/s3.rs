@@ -22,10 +22,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "indirect",
         needs: &[],
         check: cosine_direction,
-        french: [
-            "la direction pondérée par le cosinus",
-            "séance 3, «\u{a0}Éclairage indirect\u{a0}»",
-        ],
     },
     Exercise {
         id: "s3.2",
@@ -33,10 +29,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "indirect",
         needs: &[],
         check: frame,
-        french: [
-            "le repère autour de la normale",
-            "séance 3, «\u{a0}Éclairage indirect\u{a0}»",
-        ],
     },
     Exercise {
         id: "s3.3",
@@ -44,10 +36,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "indirect",
         needs: &["s3.1", "s3.2"],
         check: indirect_bounce,
-        french: [
-            "le rebond indirect",
-            "séance 3, «\u{a0}Éclairage indirect\u{a0}»",
-        ],
     },
     Exercise {
         id: "s3.4",
@@ -55,10 +43,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "antialiasing",
         needs: &[],
         check: gaussian,
-        french: [
-            "le filtre gaussien du pixel",
-            "séance 3, «\u{a0}Anticrénelage\u{a0}»",
-        ],
     },
 ];
 
@@ -81,30 +65,17 @@ fn cosine_direction() -> Outcome {
     if let Some((u1, u2, w)) = worst {
         let (u1, u2, s) = (num(u1), num(u2), separator());
         return Err(say!(
-            "(u1, u2) = ({u1}, {u2}) gave {}: expected a unit vector with z >= 0",
-            "(u1{s}u2) = ({u1}{s}{u2}) donne {}, au lieu d'un vecteur unitaire avec z >= 0",
-            vec(w)
+            "s3-u1-u2-gave-expected-a-unit",
+            vec_w = vec(w),
+            u1 = u1,
+            u2 = u2,
+            s = s
         ));
     }
-    close(
-        &say!("the mean of cos(theta) = z", "la moyenne de cos(theta) = z"),
-        z,
-        2.0 / 3.0,
-        0.01,
-    )
-    .map_err(|e| {
-        say!(
-            "{e}; uniform directions would give 1/2: the density must be cos(theta) / pi",
-            "{e}\u{a0}; des directions uniformes donneraient 1/2\u{a0}: la densité doit être cos(theta) / pi"
-        )
-    })?;
+    close(&say!("s3-the-mean-of-cos-theta-z"), z, 2.0 / 3.0, 0.01)
+        .map_err(|e| say!("s3-uniform-directions-would-give-1-2", e = e))?;
     close(&mean_of("cos^2(theta)"), z2, 0.5, 0.01)?;
-    let whole_circle = |e: String| {
-        say!(
-            "{e}: the azimuth phi = 2 pi u covers the whole circle, evenly, so that x and y average 0",
-            "{e}\u{a0}: l'azimut phi = 2 pi u parcourt tout le cercle, uniformément, si bien que x et y ont une moyenne nulle"
-        )
-    };
+    let whole_circle = |e: String| say!("s3-the-azimuth-phi-2-pi-u", e = e);
     close(&mean_of("x"), x, 0.0, 0.01).map_err(whole_circle)?;
     close(&mean_of("y"), y, 0.0, 0.01).map_err(whole_circle)?;
     close(&mean_of("x^2"), x2, 0.25, 0.01)?;
@@ -113,7 +84,7 @@ fn cosine_direction() -> Outcome {
 
 /// `the mean of x`, in the checklist's language.
 pub fn mean_of(what: &str) -> String {
-    say!("the mean of {what}", "la moyenne de {what}")
+    say!("s3-the-mean-of", what = what)
 }
 
 /// The frame of a normal `N`: two tangents `T1`, `T2` of length 1, at right angles
@@ -131,21 +102,12 @@ fn frame() -> Outcome {
     ];
     for n in normals {
         let f = Frame::new(n);
-        let what = say!("the frame of N = {}", "le repère de N = {}", vec(n));
-        let colon = say!(":", "\u{a0}:");
-        close_vec(
-            &say!("{what}: its axis N", "{what}\u{a0}: son axe N"),
-            f.n,
-            n,
-            1e-6,
-        )?;
+        let what = say!("s3-the-frame-of-n", vec = vec(n));
+        let colon = say!("s3-message");
+        close_vec(&say!("s3-its-axis-n", what = what), f.n, n, 1e-6)?;
         for (name, t) in [("T1", f.t1), ("T2", f.t2)] {
             close(
-                &say!(
-                    "{what}: the length of {name} = {}",
-                    "{what}\u{a0}: la longueur de {name} = {}",
-                    vec(t)
-                ),
+                &say!("s3-the-length-of", vec = vec(t), what = what, name = name),
                 t.length(),
                 1.0,
                 1e-5,
@@ -208,10 +170,11 @@ fn bounce_weight(tracer: &mut Tracer, floor: &Hit) -> Outcome {
     ensure(right, || {
         let albedo = vec(ALBEDO);
         say!(
-            "inside a furnace whose wall glows with radiance 1, the mean of {n} bounces from the floor with albedo {albedo} gave {}, expected {albedo}{}: the bounce brings back albedo * L(w) when its direction has density cos(theta) / pi",
-            "dans un four dont la paroi émet une luminance 1, la moyenne de {n} rebonds depuis le sol d'albédo {albedo} donne {} au lieu de {albedo}{}\u{a0}: le rebond rapporte albédo * L(w) quand sa direction a pour densité cos(theta) / pi",
-            vec(mean),
-            weight_hint((mean / ALBEDO).element_sum() / 3.0)
+            "s3-inside-a-furnace-whose-wall-glows",
+            vec_mean = vec(mean),
+            mean_element_sum = weight_hint((mean / ALBEDO).element_sum() / 3.0),
+            n = n,
+            albedo = albedo
         )
     })
 }
@@ -228,9 +191,8 @@ fn bounce_start(tracer: &mut Tracer, floor: &Hit) -> Outcome {
     let own = log.iter().filter_map(|r| r.hit).find(|h| h.t < 1e-9);
     ensure(own.is_none(), || {
         say!(
-            "a bounce from the furnace's floor met the floor itself at t = {}: start the bounce's ray off the surface with hit.spawn(direction) (session 2), not at the hit point",
-            "un rebond depuis le sol du four a rencontré le sol lui-même en t = {}\u{a0}: faites partir le rayon du rebond hors de la surface avec hit.spawn(direction) (séance 2), et non du point d'intersection",
-            decimal(format!("{:.1e}", own.map_or(0.0, |h| h.t)))
+            "s3-a-bounce-from-the-furnace-s",
+            h_h = decimal(format!("{:.1e}", own.map_or(0.0, |h| h.t)))
         )
     })
 }
@@ -243,18 +205,15 @@ fn bounces_passed_on(tracer: &mut Tracer, floor: &Hit) -> Outcome {
     let ratio = (mean / ALBEDO).element_sum() / 3.0;
     ensure((ratio / 1.75 - 1.0).abs() < 0.03, || {
         let hint = if (ratio - 1.0).abs() < 0.03 {
-            say!(
-                ": the wall was seen with no bounce left; the bounce's ray goes on with the bounces left after this one, bounces - 1",
-                "\u{a0}: la paroi a été vue sans rebond restant\u{a0}; le rayon du rebond continue avec les rebonds qui restent après celui-ci, bounces - 1"
-            )
+            say!("s3-the-wall-was-seen-with-no")
         } else {
             String::new()
         };
         say!(
-            "inside the same furnace, with 3 bounces allowed, the mean bounce from the floor gave {}, expected 1.75 albedo = {}: the wall seen with 2 bounces left sends 1 + 0.5 (1 + 0.5){hint}",
-            "dans le même four, avec 3 rebonds permis, le rebond moyen depuis le sol donne {} au lieu de 1,75 albédo = {}\u{a0}: la paroi vue avec 2 rebonds restants renvoie 1 + 0,5 (1 + 0,5){hint}",
-            vec(mean),
-            vec(1.75 * ALBEDO)
+            "s3-inside-the-same-furnace-with-3",
+            vec_mean = vec(mean),
+            vec = vec(1.75 * ALBEDO),
+            hint = hint
         )
     })
 }
@@ -264,20 +223,11 @@ fn bounces_passed_on(tracer: &mut Tracer, floor: &Hit) -> Outcome {
 pub fn weight_hint(ratio: Real) -> String {
     let near = |target: Real| (ratio / target - 1.0).abs() < 0.03;
     if near(2.0 / 3.0) {
-        say!(
-            "; 2/3 of it is the mean cosine: the cosine is counted although the direction's density already holds it",
-            "\u{a0}; 2/3 de la valeur attendue, c'est le cosinus moyen\u{a0}: le cosinus est compté alors que la densité de la direction le contient déjà"
-        )
+        say!("s3-2-3-of-it-is-the")
     } else if near(1.0 / PI) {
-        say!(
-            "; 1/pi of it: the BRDF's 1/pi is counted although the density's pi cancels it",
-            "\u{a0}; 1/pi de la valeur attendue\u{a0}: le 1/pi de la BRDF est compté alors que le pi de la densité l'annule"
-        )
+        say!("s3-1-pi-of-it-the-brdf")
     } else if near(2.0) {
-        say!(
-            "; twice it: the weight divides by the density of a uniform direction, 1 / (2 pi), not of a cosine-weighted one",
-            "\u{a0}; le double de la valeur attendue\u{a0}: le poids divise par la densité d'une direction uniforme, 1 / (2 pi), et non par celle d'une direction pondérée par le cosinus"
-        )
+        say!("s3-twice-it-the-weight-divides-by")
     } else {
         String::new()
     }
@@ -305,10 +255,7 @@ fn gaussian() -> Outcome {
     close(&(mean_of("y^2") + &sigma_is), y2, 0.25, 0.01)?;
     close(&mean_of("x y"), xy, 0.0, 0.01)?;
     close(
-        &say!(
-            "the share of offsets within sigma of the centre",
-            "la part des décalages à moins de sigma du centre"
-        ),
+        &say!("s3-the-share-of-offsets-within-sigma"),
         within,
         0.3935,
         0.01,
@@ -319,8 +266,11 @@ fn gaussian() -> Outcome {
             let [u1, x, y] = [u1, x, y].map(|v| decimal(v.to_string()));
             let s = separator();
             say!(
-                "u1 = {u1}: gave ({x}, {y}), expected finite numbers (the logarithm of 1 - u1, never of 0)",
-                "u1 = {u1}\u{a0}: obtenu ({x}{s}{y}), attendu des nombres finis (le logarithme de 1 - u1, jamais de 0)"
+                "s3-u1-gave-expected-finite-numbers-the",
+                u1 = u1,
+                x = x,
+                y = y,
+                s = s
             )
         })?;
     }

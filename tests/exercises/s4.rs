@@ -20,10 +20,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "light-sampling",
         needs: &[],
         check: cone_sample,
-        french: [
-            "une direction dans le cône de la source",
-            "séance 4, «\u{a0}Échantillonnage de la lumière\u{a0}»",
-        ],
     },
     Exercise {
         id: "s4.2",
@@ -31,10 +27,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "light-sampling",
         needs: &[],
         check: cone_pdf,
-        french: [
-            "la densité du cône",
-            "séance 4, «\u{a0}Échantillonnage de la lumière\u{a0}»",
-        ],
     },
     Exercise {
         id: "s4.3",
@@ -42,10 +34,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "depth-of-field",
         needs: &[],
         check: disk,
-        french: [
-            "un point de la lentille",
-            "séance 4, «\u{a0}Profondeur de champ\u{a0}»",
-        ],
     },
     Exercise {
         id: "s4.4",
@@ -53,10 +41,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "depth-of-field",
         needs: &["s4.3"],
         check: thin_lens,
-        french: [
-            "la lentille mince",
-            "séance 4, «\u{a0}Profondeur de champ\u{a0}»",
-        ],
     },
 ];
 
@@ -81,26 +65,15 @@ fn cone_sample() -> Outcome {
     if let Some((u1, u2, w)) = wrong {
         let (u1, u2, s) = (num(u1), num(u2), separator());
         return Err(say!(
-            "the cone of half-angle 30 degrees around +z, (u1, u2) = ({u1}, {u2}): gave {}, expected a unit vector with z >= cos(30) = 0.866",
-            "le cône de demi-angle 30 degrés autour de +z, (u1{s}u2) = ({u1}{s}{u2})\u{a0}: obtenu {}, attendu un vecteur unitaire avec z >= cos(30) = 0,866",
-            vec(w)
+            "s4-the-cone-of-half-angle-30",
+            vec_w = vec(w),
+            u1 = u1,
+            u2 = u2,
+            s = s
         ));
     }
-    close(
-        &say!(
-            "the cone of half-angle 30 degrees: the mean of cos(theta)",
-            "le cône de demi-angle 30 degrés\u{a0}: la moyenne de cos(theta)"
-        ),
-        z,
-        0.9330,
-        0.002,
-    )
-    .map_err(|e| {
-        say!(
-            "{e}: uniform over the cone's solid angle, cos(theta) is uniform between cos(theta_max) and 1 (not theta between 0 and theta_max)",
-            "{e}\u{a0}: uniformes sur l'angle solide du cône, les directions ont un cos(theta) uniforme entre cos(theta_max) et 1 (et non un theta uniforme entre 0 et theta_max)"
-        )
-    })?;
+    close(&say!("s4-the-cone-of-half-angle-30-2"), z, 0.9330, 0.002)
+        .map_err(|e| say!("s4-uniform-over-the-cone-s-solid", e = e))?;
     close(&mean_of("x"), x, 0.0, 0.005)?;
     close(&mean_of("y"), y, 0.0, 0.005)?;
     generated::cone_sample(Cone::sample)
@@ -113,15 +86,12 @@ fn cone_pdf() -> Outcome {
     let inside = 1.0 / (2.0 * PI * (1.0 - (0.75 as Real).sqrt()));
     let at = |cos: Real| {
         let cos = num(cos);
-        say!(
-            "the density of the 30-degree cone at cos(theta) = {cos}",
-            "la densité du cône de 30 degrés en cos(theta) = {cos}"
-        )
+        say!("s4-the-density-of-the-30-degree", cos = cos)
     };
     close(&at(0.95), cone.pdf(0.95), inside, 1e-3)?;
     close(&at(1.0), cone.pdf(1.0), inside, 1e-3)?;
     close(
-        &(at(0.5) + &say!(", outside it", ", hors du cône")),
+        &(at(0.5) + &say!("s4-outside-it")),
         cone.pdf(0.5),
         0.0,
         1e-9,
@@ -144,8 +114,10 @@ fn disk() -> Outcome {
     if let Some((x, y)) = outside {
         let (x, y, s) = (num(x), num(y), separator());
         return Err(say!(
-            "gave the point ({x}, {y}), outside the unit disk",
-            "donne le point ({x}{s}{y}), hors du disque unité"
+            "s4-gave-the-point-outside-the-unit",
+            x = x,
+            y = y,
+            s = s
         ));
     }
     close(&mean_of("x"), x, 0.0, 0.01)?;
@@ -154,20 +126,9 @@ fn disk() -> Outcome {
         if (r2 - 1.0 / 3.0).abs() > 0.02 {
             return e;
         }
-        say!(
-            "{e}; with r = xi the points crowd the centre (1/3): uniform over the area needs r = sqrt(xi)",
-            "{e}\u{a0}; avec r = xi, les points se massent au centre (1/3)\u{a0}: une répartition uniforme sur l'aire demande r = sqrt(xi)"
-        )
+        say!("s4-with-r-xi-the-points-crowd", e = e)
     })?;
-    close(
-        &say!(
-            "the share of points within r = 1/2",
-            "la part des points à une distance r <= 1/2 du centre"
-        ),
-        near,
-        0.25,
-        0.01,
-    )?;
+    close(&say!("s4-the-share-of-points-within-r"), near, 0.25, 0.01)?;
     generated::disk(sample_disk)
 }
 
@@ -188,29 +149,21 @@ fn thin_lens() -> Outcome {
         let (origin, direction) = lens.refocus(Vec3::ZERO, Vec3::new(1.0, 2.0, -4.0), &mut rng);
         ensure(
             origin.z.abs() < 1e-6 && origin.truncate().length() <= 0.5 + 1e-6,
-            || {
-                say!(
-                    "a ray through the lens of radius 0.5 starts at {}: expected a point of the lens (z = 0, within 0.5 of the eye)",
-                    "un rayon à travers la lentille de rayon 0,5 part de {}\u{a0}: attendu un point de la lentille (z = 0, à moins de 0,5 de l'œil)",
-                    vec(origin)
-                )
-            },
+            || say!("s4-a-ray-through-the-lens-of", vec_origin = vec(origin)),
         )?;
         ensure(direction.z < 0.0, || {
             say!(
-                "the ray from {} along {} never reaches the focus plane z = -10: it must head from its point of the lens towards (2.5, 5, -10), where the pinhole ray meets that plane",
-                "le rayon issu de {} selon {} n'atteint jamais le plan de mise au point z = -10\u{a0}: il doit aller de son point de la lentille vers (2,5\u{a0}; 5\u{a0}; -10), où le rayon du sténopé rencontre ce plan",
-                vec(origin),
-                vec(direction)
+                "s4-the-ray-from-along-never-reaches",
+                vec_origin = vec(origin),
+                vec_direction = vec(direction)
             )
         })?;
         let s = (focus.z - origin.z) / direction.z;
         close_vec(
             &say!(
-                "the ray from {} along {}, where it crosses the focus plane z = -10 (a plane at the focus distance along the view, not a sphere around the eye: the pinhole direction is scaled so that its z is -focus)",
-                "le rayon issu de {} selon {}, là où il traverse le plan de mise au point z = -10 (un plan à la distance de mise au point le long de la visée, non une sphère autour de l'œil\u{a0}: la direction du sténopé est mise à l'échelle pour que son z vaille -focus)",
-                vec(origin),
-                vec(direction)
+                "s4-the-ray-from-along-where-it",
+                vec_origin = vec(origin),
+                vec_direction = vec(direction)
             ),
             origin + s * direction,
             focus,
@@ -219,10 +172,7 @@ fn thin_lens() -> Outcome {
         spread += origin.truncate().length_squared();
     }
     close(
-        &say!(
-            "the mean of x^2 + y^2 over the starts on the lens",
-            "la moyenne de x^2 + y^2 sur les points de départ de la lentille"
-        ),
+        &say!("s4-the-mean-of-x-2-y"),
         spread / draws as Real,
         0.125,
         0.01,

@@ -17,10 +17,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "mesh",
         needs: &[],
         check: triangle,
-        french: [
-            "le test rayon-triangle",
-            "séance 5, «\u{a0}Un maillage\u{a0}»",
-        ],
     },
     Exercise {
         id: "s5.2",
@@ -28,10 +24,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "mesh-bbox",
         needs: &[],
         check: slab,
-        french: [
-            "le test des tranches",
-            "séance 5, «\u{a0}La boîte englobante\u{a0}»",
-        ],
     },
 ];
 
@@ -45,67 +37,49 @@ fn triangle() -> Outcome {
     let down = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
         (
-            [
-                "straight down through (0.25, 0.5)",
-                "descendant à la verticale par (0,25\u{a0}; 0,5)",
-            ],
+            say!("s5-case-straight-down-through-0-25-0"),
             Vec3::new(0.25, 0.5, 1.0),
             down,
             10.0,
             Some((1.0, 0.25, 0.5)),
         ),
         (
-            [
-                "straight up from below through (0.2, 0.2)",
-                "montant à la verticale depuis le dessous par (0,2\u{a0}; 0,2)",
-            ],
+            say!("s5-case-straight-up-from-below-through-0"),
             Vec3::new(0.2, 0.2, -2.0),
             -down,
             10.0,
             Some((2.0, 0.2, 0.2)),
         ),
         (
-            [
-                "down through (0.6, 0.6), past the long edge",
-                "descendant par (0,6\u{a0}; 0,6), au-delà du grand côté",
-            ],
+            say!("s5-case-down-through-0-6-0-6"),
             Vec3::new(0.6, 0.6, 1.0),
             down,
             10.0,
             None,
         ),
         (
-            [
-                "down through (0.25, 0.5) with t_max = 0.5",
-                "descendant par (0,25\u{a0}; 0,5) avec t_max = 0,5",
-            ],
+            say!("s5-case-down-through-0-25-0-5"),
             Vec3::new(0.25, 0.5, 1.0),
             down,
             0.5,
             None,
         ),
         (
-            [
-                "parallel to the triangle's plane",
-                "parallèle au plan du triangle",
-            ],
+            say!("s5-case-parallel-to-the-triangle-s-plane"),
             Vec3::new(-1.0, 0.2, 0.0),
             Vec3::X,
             10.0,
             None,
         ),
         (
-            [
-                "pointing away, up from above",
-                "qui s'en éloigne, montant depuis le dessus",
-            ],
+            say!("s5-case-pointing-away-up-from-above"),
             Vec3::new(0.25, 0.5, 1.0),
             -down,
             10.0,
             None,
         ),
     ];
-    for ([what, quoi], origin, direction, t_max, expected) in cases {
+    for (what, origin, direction, t_max, expected) in cases {
         let gave = intersect_triangle(&Ray::new(origin, direction), a, b, c, t_max);
         let right = match (gave, expected) {
             (Some(h), Some((t, beta, gamma))) => {
@@ -124,13 +98,13 @@ fn triangle() -> Outcome {
         };
         ensure(right, || {
             say!(
-                "the triangle {}, {}, {}, a ray {what}: gave {}, expected {}",
-                "le triangle {}, {}, {}, un rayon {quoi}\u{a0}: obtenu {}, attendu {}",
-                vec(a),
-                vec(b),
-                vec(c),
-                show(gave.map(|h| (h.t, h.beta, h.gamma))),
-                show(expected)
+                "s5-the-triangle-a-ray-gave-expected",
+                vec_a = vec(a),
+                vec_b = vec(b),
+                vec_c = vec(c),
+                h_gamma = show(gave.map(|h| (h.t, h.beta, h.gamma))),
+                show_expected = show(expected),
+                what = what
             )
         })?;
     }
@@ -150,109 +124,82 @@ fn slab() -> Outcome {
     let z = Vec3::new(0.0, 0.0, -1.0);
     let cases = [
         (
-            [
-                "from (0, 0, 5) along -z",
-                "issu de (0\u{a0}; 0\u{a0}; 5) selon -z",
-            ],
+            say!("s5-case-from-0-0-5-along-z"),
             Vec3::new(0.0, 0.0, 5.0),
             z,
             100.0,
             Some(4.0),
         ),
         (
-            [
-                "from (-5, 0.5, 0) along +x",
-                "issu de (-5\u{a0}; 0,5\u{a0}; 0) selon +x",
-            ],
+            say!("s5-case-from-5-0-5-0-along"),
             Vec3::new(-5.0, 0.5, 0.0),
             Vec3::X,
             100.0,
             Some(4.0),
         ),
         (
-            [
-                "from (5, 0, 0) along -x",
-                "issu de (5\u{a0}; 0\u{a0}; 0) selon -x",
-            ],
+            say!("s5-case-from-5-0-0-along-x"),
             Vec3::new(5.0, 0.0, 0.0),
             -Vec3::X,
             100.0,
             Some(4.0),
         ),
         (
-            [
-                "from inside, at (0.5, 0, 0), along -z",
-                "issu de l'intérieur, en (0,5\u{a0}; 0\u{a0}; 0), selon -z",
-            ],
+            say!("s5-case-from-inside-at-0-5-0"),
             Vec3::new(0.5, 0.0, 0.0),
             z,
             100.0,
             Some(0.0),
         ),
         (
-            [
-                "from (3, 0, 5) along -z, beside the box",
-                "issu de (3\u{a0}; 0\u{a0}; 5) selon -z, à côté de la boîte",
-            ],
+            say!("s5-case-from-3-0-5-along-z"),
             Vec3::new(3.0, 0.0, 5.0),
             z,
             100.0,
             None,
         ),
         (
-            [
-                "from (0, 0, 5) along +z, away from the box",
-                "issu de (0\u{a0}; 0\u{a0}; 5) selon +z, qui s'éloigne de la boîte",
-            ],
+            say!("s5-case-from-0-0-5-along-z-2"),
             Vec3::new(0.0, 0.0, 5.0),
             -z,
             100.0,
             None,
         ),
         (
-            [
-                "from (0, 0, 5) along -z with t_max = 3 (entered at t = 4, beyond t_max: missed, for the interval starts as [0, t_max])",
-                "issu de (0\u{a0}; 0\u{a0}; 5) selon -z avec t_max = 3 (entré en t = 4, au-delà de t_max\u{a0}: manqué, car l'intervalle part de [0, t_max])",
-            ],
+            say!("s5-case-from-0-0-5-along-z-3"),
             Vec3::new(0.0, 0.0, 5.0),
             z,
             3.0,
             None,
         ),
         (
-            [
-                "from (4, 4, 0) along (-1, -1, 0) / sqrt 2",
-                "issu de (4\u{a0}; 4\u{a0}; 0) selon (-1\u{a0}; -1\u{a0}; 0) / sqrt 2",
-            ],
+            say!("s5-case-from-4-4-0-along-1"),
             Vec3::new(4.0, 4.0, 0.0),
             Vec3::new(-1.0, -1.0, 0.0),
             100.0,
             Some(3.0 * (2.0 as Real).sqrt()),
         ),
         (
-            [
-                "lying in the face x = -1, from (-1, 0, 5) along (-0, 0, -1) (the chapter's box on NaN: 1 / -0 is -infinity, and 0 x infinity is NaN)",
-                "couché dans la face x = -1, issu de (-1\u{a0}; 0\u{a0}; 5) selon (-0\u{a0}; 0\u{a0}; -1) (l'encadré du chapitre sur NaN\u{a0}: 1 / -0 vaut -l'infini, et 0 x l'infini vaut NaN)",
-            ],
+            say!("s5-case-lying-in-the-face-x-1"),
             Vec3::new(-1.0, 0.0, 5.0),
             Vec3::new(-0.0, 0.0, -1.0),
             100.0,
             Some(4.0),
         ),
     ];
-    for ([what, quoi], origin, direction, t_max, expected) in cases {
+    for (what, origin, direction, t_max, expected) in cases {
         let ray = Ray::new(origin, direction);
         let gave = cube.entry(&ray, ray.direction.recip(), t_max);
         let right = same_distance(gave, expected, 1e-4);
         ensure(right, || {
             say!(
-                "the box from {} to {}, a ray {what} (d = {}): gave {}, expected {}",
-                "la boîte de {} à {}, un rayon {quoi} (d = {})\u{a0}: obtenu {}, attendu {}",
-                vec(cube.min),
-                vec(cube.max),
-                vec(ray.direction),
-                maybe(gave),
-                maybe(expected)
+                "s5-the-box-from-to-a-ray",
+                vec_cube = vec(cube.min),
+                vec_cube2 = vec(cube.max),
+                ray_direction = vec(ray.direction),
+                maybe_gave = maybe(gave),
+                maybe_expected = maybe(expected),
+                what = what
             )
         })?;
     }

@@ -21,7 +21,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "bvh",
         needs: &[],
         check: build,
-        french: ["la construction de la BVH", "séance 6, «\u{a0}BVH\u{a0}»"],
     },
     Exercise {
         id: "s6.2",
@@ -29,7 +28,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "bvh",
         needs: &[],
         check: walk,
-        french: ["le parcours de la BVH", "séance 6, «\u{a0}BVH\u{a0}»"],
     },
     Exercise {
         id: "s6.3",
@@ -37,10 +35,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "smooth-normals",
         needs: &[],
         check: smooth_normal,
-        french: [
-            "la normale interpolée",
-            "séance 6, «\u{a0}Normales lissées\u{a0}»",
-        ],
     },
 ];
 
@@ -78,10 +72,7 @@ fn build() -> Outcome {
     let mut seen = vec![0u32; n];
     for &t in &bvh.order {
         ensure((t as usize) < n, || {
-            say!(
-                "Bvh::order holds the triangle number {t}, but Spot has {n}",
-                "Bvh::order contient le triangle numéro {t}, mais Spot n'en a que {n}"
-            )
+            say!("s6-bvh-order-holds-the-triangle-number", t = t, n = n)
         })?;
         seen[t as usize] += 1;
     }
@@ -95,31 +86,27 @@ fn build() -> Outcome {
             .position(|&s| s > 1)
             .map_or("-".into(), |t| t.to_string());
         say!(
-            "Bvh::order must list each of Spot's {n} triangles once: it has {} entries, lacks triangle {missing} and lists triangle {twice} more than once",
-            "Bvh::order doit lister une fois chacun des {n} triangles de Spot\u{a0}: il compte {} entrées, il lui manque le triangle {missing} et il liste plus d'une fois le triangle {twice}",
-            bvh.order.len()
+            "s6-bvh-order-must-list-each-of",
+            bvh_order = bvh.order.len(),
+            n = n,
+            missing = missing,
+            twice = twice
         )
     })?;
     ensure(!bvh.nodes.is_empty(), || {
-        say!(
-            "the hierarchy has no node: node 0 is the root",
-            "la hiérarchie n'a aucun nœud\u{a0}: le nœud 0 est la racine"
-        )
+        say!("s6-the-hierarchy-has-no-node-node")
     })?;
     let (mut leaves, mut covered) = (0, vec![false; n]);
     let mut pending = vec![(0usize, 1usize)];
     while let Some((index, depth)) = pending.pop() {
         ensure(depth <= 64, || {
-            say!(
-                "the hierarchy is deeper than 64 levels at node {index}",
-                "la hiérarchie dépasse 64 niveaux de profondeur au nœud {index}"
-            )
+            say!("s6-the-hierarchy-is-deeper-than-64", index = index)
         })?;
         let node: Node = *bvh.nodes.get(index).ok_or_else(|| {
             say!(
-                "a node points to node {index}, past the {} nodes",
-                "un nœud pointe vers le nœud {index}, au-delà des {} nœuds",
-                bvh.nodes.len()
+                "s6-a-node-points-to-node-past",
+                bvh_nodes = bvh.nodes.len(),
+                index = index
             )
         })?;
         if node.count > 0 {
@@ -128,10 +115,10 @@ fn build() -> Outcome {
             for slot in range.clone() {
                 ensure(slot < n && !covered[slot], || {
                     say!(
-                        "the leaf at node {index} covers Bvh::order[{}..{}], which another leaf covers too or lies past the end",
-                        "la feuille du nœud {index} couvre Bvh::order[{}..{}], qu'une autre feuille couvre aussi ou qui dépasse la fin",
-                        range.start,
-                        range.end
+                        "s6-the-leaf-at-node-covers-bvh",
+                        range_start = range.start,
+                        range_end = range.end,
+                        index = index
                     )
                 })?;
                 covered[slot] = true;
@@ -139,11 +126,11 @@ fn build() -> Outcome {
                 let around = corners.iter().fold(Aabb::EMPTY, |b, &p| b.grow(p));
                 ensure(holds(&node.bounds, &around), || {
                     say!(
-                        "the box of leaf node {index}, {} to {}, does not hold its triangle {}",
-                        "la boîte de la feuille du nœud {index}, de {} à {}, ne contient pas son triangle {}",
-                        vec(node.bounds.min),
-                        vec(node.bounds.max),
-                        bvh.order[slot]
+                        "s6-the-box-of-leaf-node-to",
+                        node_bounds = vec(node.bounds.min),
+                        node_bounds2 = vec(node.bounds.max),
+                        order_slot = bvh.order[slot],
+                        index = index
                     )
                 })?;
             }
@@ -151,15 +138,17 @@ fn build() -> Outcome {
             for child in [node.first as usize, node.first as usize + 1] {
                 let inner = bvh.nodes.get(child).ok_or_else(|| {
                     say!(
-                        "node {index} points to node {child}, past the {} nodes: an inner node's children are the nodes first and first + 1, pushed side by side when it is split",
-                        "le nœud {index} pointe vers le nœud {child}, au-delà des {} nœuds\u{a0}: les enfants d'un nœud interne sont les nœuds first et first + 1, ajoutés côte à côte quand on le divise",
-                        bvh.nodes.len()
+                        "s6-node-points-to-node-past-the",
+                        bvh_nodes = bvh.nodes.len(),
+                        index = index,
+                        child = child
                     )
                 })?;
                 ensure(holds(&node.bounds, &inner.bounds), || {
                     say!(
-                        "the box of node {child} sticks out of its parent's, node {index}",
-                        "la boîte du nœud {child} dépasse de celle de son parent, le nœud {index}"
+                        "s6-the-box-of-node-sticks-out",
+                        child = child,
+                        index = index
                     )
                 })?;
                 pending.push((child, depth + 1));
@@ -170,15 +159,13 @@ fn build() -> Outcome {
         let slot = covered.iter().position(|&c| !c).unwrap_or(0);
         let triangle = bvh.order[slot];
         say!(
-            "triangle {triangle} (Bvh::order[{slot}]) is in no leaf: a ray can never find it; the leaves' ranges must cover the whole of Bvh::order",
-            "le triangle {triangle} (Bvh::order[{slot}]) n'est dans aucune feuille\u{a0}: aucun rayon ne peut le trouver\u{a0}; les plages des feuilles doivent couvrir tout Bvh::order"
+            "s6-triangle-bvh-order-is-in-no",
+            triangle = triangle,
+            slot = slot
         )
     })?;
     ensure(leaves >= n / 16, || {
-        say!(
-            "Spot's {n} triangles end in {leaves} leaves: expected the boxes split until about 4 triangles a leaf",
-            "les {n} triangles de Spot aboutissent dans {leaves} feuilles\u{a0}: attendu des boîtes divisées jusqu'à environ 4 triangles par feuille"
-        )
+        say!("s6-spot-s-triangles-end-in-leaves", n = n, leaves = leaves)
     })?;
     generated::bvh_build(Bvh::build)
 }
@@ -267,23 +254,18 @@ fn walk() -> Outcome {
         };
         ensure(right, || {
             let why = match (gave, expected) {
-                (Some(t), Some(e)) if t > e => say!(
-                    ": a nearer hit lies in a node the walk left for later; go on with the rest of the stack, and skip only the nodes entered beyond the nearest hit so far",
-                    "\u{a0}: une intersection plus proche se trouve dans un nœud que le parcours a laissé pour plus tard\u{a0}; continuez avec le reste de la pile, en ne sautant que les nœuds où le rayon entre au-delà de l'intersection la plus proche trouvée"
-                ),
-                (None, Some(_)) => say!(
-                    ": every node whose box the ray enters must be walked, and each leaf's triangles tested",
-                    "\u{a0}: chaque nœud dont le rayon traverse la boîte doit être parcouru, et les triangles de chaque feuille testés"
-                ),
+                (Some(t), Some(e)) if t > e => say!("s6-a-nearer-hit-lies-in-a"),
+                (None, Some(_)) => say!("s6-every-node-whose-box-the-ray"),
                 _ => String::new(),
             };
             say!(
-                "ray {k} at Spot, from {} along {}: the walk gave {}, testing every triangle {}{why}",
-                "rayon {k} vers Spot, issu de {} selon {}\u{a0}: le parcours donne {}, le test de chaque triangle {}{why}",
-                vec(ray.origin),
-                vec(ray.direction),
-                maybe(gave),
-                maybe(expected)
+                "s6-ray-at-spot-from-along-the",
+                ray_origin = vec(ray.origin),
+                ray_direction = vec(ray.direction),
+                maybe_gave = maybe(gave),
+                maybe_expected = maybe(expected),
+                k = k,
+                why = why
             )
         })?;
     }
@@ -311,48 +293,33 @@ fn smooth_normal() -> Outcome {
     let centre = Vec3::new(0.270_598, 0.270_598, 0.923_880);
     let cases = [
         (
-            [
-                "at A, weights (1, 0, 0)",
-                "en A, poids (1\u{a0}; 0\u{a0}; 0)",
-            ],
+            say!("s6-case-at-a-weights-1-0-0"),
             [1.0, 0.0, 0.0],
             Vec3::Z,
             Vec3::Z,
         ),
         (
-            [
-                "halfway along BC, weights (0, 0.5, 0.5)",
-                "au milieu de BC, poids (0\u{a0}; 0,5\u{a0}; 0,5)",
-            ],
+            say!("s6-case-halfway-along-bc-weights-0-0"),
             [0.0, 0.5, 0.5],
             Vec3::Z,
             middle,
         ),
         (
-            [
-                "at the centre, weights (1/3, 1/3, 1/3)",
-                "au centre, poids (1/3\u{a0}; 1/3\u{a0}; 1/3)",
-            ],
+            say!("s6-case-at-the-centre-weights-1-3"),
             [third, third, third],
             Vec3::Z,
             centre,
         ),
         (
-            [
-                "at the centre, seen from below (the shading normal is turned to the side the geometric normal faces)",
-                "au centre, vu de dessous (la normale d'ombrage est tournée du côté où regarde la normale géométrique)",
-            ],
+            say!("s6-case-at-the-centre-seen-from-below"),
             [third, third, third],
             -Vec3::Z,
             -centre,
         ),
     ];
-    for ([what, quoi], weights, geometric, expected) in cases {
+    for (what, weights, geometric, expected) in cases {
         close_vec(
-            &say!(
-                "the triangle's shading normal {what}",
-                "la normale d'ombrage du triangle {quoi}"
-            ),
+            &say!("s6-the-triangle-s-shading-normal", what = what),
             mesh.smooth_normal(0, weights, geometric),
             expected,
             1e-5,
@@ -366,10 +333,7 @@ fn smooth_normal() -> Outcome {
         &AS_READ,
     );
     close_vec(
-        &say!(
-            "a triangle without vertex normals",
-            "un triangle sans normales aux sommets"
-        ),
+        &say!("s6-a-triangle-without-vertex-normals"),
         flat.smooth_normal(0, [third; 3], Vec3::Z),
         Vec3::Z,
         1e-9,

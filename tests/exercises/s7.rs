@@ -19,10 +19,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "textures",
         needs: &[],
         check: lookup,
-        french: [
-            "la lecture de la texture",
-            "séance 7, «\u{a0}Textures\u{a0}»",
-        ],
     },
     Exercise {
         id: "s7.2",
@@ -30,10 +26,6 @@ pub const EXERCISES: &[Exercise] = &[
         shown_by: "camera",
         needs: &[],
         check: orientation,
-        french: [
-            "l'orientation de la caméra",
-            "séance 7, «\u{a0}Le déplacement de la caméra\u{a0}»",
-        ],
     },
 ];
 
@@ -59,80 +51,67 @@ fn lookup() -> Outcome {
             Filter::Nearest,
             [0.25, 0.75],
             RED,
-            [
-                "the top-left texel's centre",
-                "le centre du texel en haut à gauche",
-            ],
+            say!("s7-case-the-top-left-texel-s-centre"),
         ),
         (
             Filter::Nearest,
             [0.75, 0.25],
             Colour::ONE,
-            [
-                "the bottom-right texel's centre",
-                "le centre du texel en bas à droite",
-            ],
+            say!("s7-case-the-bottom-right-texel-s-centre"),
         ),
         (
             Filter::Nearest,
             [0.9, 0.9],
             GREEN,
-            ["near the top-right corner", "près du coin en haut à droite"],
+            say!("s7-case-near-the-top-right-corner"),
         ),
         (
             Filter::Nearest,
             [1.25, 0.75],
             RED,
-            [
-                "one texture to the right of the top-left centre",
-                "une largeur de texture à droite du centre du texel en haut à gauche",
-            ],
+            say!("s7-case-one-texture-to-the-right-of"),
         ),
         (
             Filter::Nearest,
             [-0.25, 0.75],
             GREEN,
-            [
-                "a quarter of a texture left of its edge, which wraps to the top-right texel (the chapter's Euclidean remainder: -1 wraps to 1, where % gives -1)",
-                "un quart de texture à gauche de son bord, qui revient au texel en haut à droite (le reste euclidien du chapitre\u{a0}: -1 revient à 1, là où % donne -1)",
-            ],
+            say!("s7-case-a-quarter-of-a-texture-left"),
         ),
         (
             Filter::Bilinear,
             [0.25, 0.75],
             RED,
-            [
-                "the top-left texel's centre",
-                "le centre du texel en haut à gauche",
-            ],
+            say!("s7-case-the-top-left-texel-s-centre-2"),
         ),
         (
             Filter::Bilinear,
             [0.5, 0.5],
             Colour::splat(0.5),
-            ["the texture's centre", "le centre de la texture"],
+            say!("s7-case-the-texture-s-centre"),
         ),
         (
             Filter::Bilinear,
             [0.5, 0.75],
             Colour::new(0.5, 0.5, 0.0),
-            [
-                "between the two top texels",
-                "entre les deux texels du haut",
-            ],
+            say!("s7-case-between-the-two-top-texels"),
         ),
     ];
-    for (filter, uv, expected, [what, quoi]) in cases {
+    for (filter, uv, expected, what) in cases {
         let lookup = match filter {
-            Filter::Nearest => "au plus proche",
-            Filter::Bilinear => "bilinéaire",
+            Filter::Nearest => say!("checklist-filter-nearest"),
+            Filter::Bilinear => say!("checklist-filter-bilinear"),
         };
         let [u, v] = uv.map(|x| decimal(x.to_string()));
         let s = separator();
         close_vec(
             &say!(
-                "a 2 x 2 texture (red, green / blue, white), {filter:?} lookup at (u, v) = ({u}, {v}), {what}",
-                "une texture de 2 x 2 (rouge, vert / bleu, blanc), lecture {lookup} ({filter:?}) en (u{s}v) = ({u}{s}{v}), {quoi}"
+                "s7-a-2-x-2-texture-red",
+                filter_debug = format!("{:?}", filter),
+                u = u,
+                v = v,
+                what = what,
+                lookup = lookup,
+                s = s
             ),
             texture(filter).colour(uv),
             expected,
@@ -173,10 +152,10 @@ fn orientation() -> Outcome {
         let what = {
             let plunge = decimal(plunge.to_string());
             say!(
-                "the camera at {} looking at the origin, up {}, plunge {plunge} degrees",
-                "la caméra en {} regardant l'origine, up {}, plongée de {plunge} degrés",
-                vec(eye),
-                vec(Vec3::Y)
+                "s7-the-camera-at-looking-at-the",
+                vec_eye = vec(eye),
+                vec = vec(Vec3::Y),
+                plunge = plunge
             )
         };
         let Some((
@@ -188,49 +167,31 @@ fn orientation() -> Outcome {
             },
         )) = aim(eye, Vec3::ZERO, Vec3::Y, plunge)
         else {
-            return Err(say!(
-                "{what}: gave no aimed orientation",
-                "{what}\u{a0}: ne donne aucune orientation visée (Orientation::Aimed)"
-            ));
+            return Err(say!("s7-gave-no-aimed-orientation", what = what));
         };
         close_vec(
-            &say!("{what}: the eye", "{what}\u{a0}: l'œil"),
+            &say!("s7-the-eye", what = what),
             gave_eye,
             expected_eye,
             1e-4,
         )?;
         close_vec(
-            &say!(
-                "{what}: right = forward x up, normalised (the cross product's order gives its sign)",
-                "{what}\u{a0}: right (vers la droite) = forward x up, normalisé (l'ordre du produit vectoriel en donne le signe)"
-            ),
+            &say!("s7-right-forward-x-up-normalised-the", what = what),
             r,
             right,
             1e-5,
         )?;
-        close_vec(
-            &say!("{what}: up", "{what}\u{a0}: up (vers le haut)"),
-            u,
-            up,
-            1e-5,
-        )?;
-        close_vec(
-            &say!("{what}: back", "{what}\u{a0}: back (vers l'arrière)"),
-            b,
-            back,
-            1e-5,
-        )?;
+        close_vec(&say!("s7-up", what = what), u, up, 1e-5)?;
+        close_vec(&say!("s7-back", what = what), b, back, 1e-5)?;
     }
     let down = aim(Vec3::new(0.0, 10.0, 0.0), Vec3::ZERO, Vec3::Y, 0.0);
     ensure(down.is_none(), || {
         say!(
-            "the camera at {} looking straight down along up: gave {}, expected none (no right-hand direction)",
-            "la caméra en {} regardant droit vers le bas, le long de up\u{a0}: obtenu {}, attendu aucune orientation (pas de direction vers la droite)",
-            vec(Vec3::new(0.0, 10.0, 0.0)),
-            down.map_or(say!("none", "aucune orientation"), |(eye, _)| say!(
-                "a camera at {}",
-                "une caméra en {}",
-                vec(eye)
+            "s7-the-camera-at-looking-straight-down",
+            vec_new = vec(Vec3::new(0.0, 10.0, 0.0)),
+            vec_eye = down.map_or(say!("s7-none"), |(eye, _)| say!(
+                "s7-a-camera-at",
+                vec_eye = vec(eye)
             ))
         )
     })?;

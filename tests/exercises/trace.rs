@@ -110,15 +110,13 @@ pub fn trace(stage: &Stage, overrides: &Overrides, rendered: &[Colour]) -> Optio
     )?;
     let (your_path, your_colour) = path_of!(raycourse, &yours, row, column);
     let (course_path, course_colour) = path_of!(course, &theirs, row, column);
-    let pixel = say!(
-        "pixel (row {row}, column {column})",
-        "le pixel (ligne {row}, colonne {column})"
-    );
+    let pixel = say!("trace-pixel-row-column", row = row, column = column);
     let found = first_difference(&your_path, &course_path, &yours, &theirs, (row, column))
         .or_else(|| shading(your_colour, course_colour, gamma))?;
     Some(say!(
-        "followed ray by ray, {pixel} differs first at {found}",
-        "suivi rayon par rayon, {pixel} diffère d'abord à cet endroit\u{a0}: {found}"
+        "trace-followed-ray-by-ray-differs-first",
+        pixel = pixel,
+        found = found
     ))
 }
 
@@ -177,17 +175,16 @@ fn first_difference(
     }
     (yours.len() != theirs.len()).then(|| {
         say!(
-            "the number of rays: yours traced {}, the course's {} (a bounce limit, or a surface that stops or goes on)",
-            "le nombre de rayons\u{a0}: le vôtre en a tracé {}, celui du cours {} (une limite de rebonds, ou une surface qui arrête ou poursuit le chemin)",
-            yours.len(),
-            theirs.len()
+            "trace-the-number-of-rays-yours-traced",
+            yours = yours.len(),
+            theirs = theirs.len()
         )
     })
 }
 
 /// The exercise's words: `exercise s1.1, Camera::pixel_direction`.
 fn exercise(id: &str, function: &str) -> String {
-    say!("exercise {id}, {function}", "l'exercice {id}, {function}")
+    say!("trace-exercise", id = id, function = function)
 }
 
 /// The camera ray differs: the course's pixel direction compared first.
@@ -202,22 +199,22 @@ fn camera_ray(
     let expected = course_scene.camera.pixel_direction(row, column);
     if apart(gave, expected) {
         return say!(
-            "the camera ray, {}: pixel_direction(row = {row}, column = {column}) of the camera {} x {}: yours gave {}, the course's gives {}",
-            "le rayon de la caméra, {}\u{a0}: pixel_direction(ligne = {row}, colonne = {column}) de la caméra {} x {}\u{a0}: le vôtre a obtenu {}, celui du cours obtient {}",
-            exercise("s1.1", "Camera::pixel_direction"),
-            your_scene.camera.width,
-            your_scene.camera.height,
-            v(gave),
-            v(expected)
+            "trace-the-camera-ray-pixel-direction-row",
+            s1_pixel_direction = exercise("s1.1", "Camera::pixel_direction"),
+            camera_width = your_scene.camera.width,
+            camera_height = your_scene.camera.height,
+            gave = v(gave),
+            expected = v(expected),
+            row = row,
+            column = column
         );
     }
     say!(
-        "the camera ray: yours from {} along {}, the course's from {} along {}: made by the pixel filter (exercise s3.4), the thin lens (s4.4) or the aim (s7.2), as far as the session goes",
-        "le rayon de la caméra\u{a0}: le vôtre issu de {} selon {}, celui du cours issu de {} selon {}\u{a0}: fait par le filtre du pixel (exercice s3.4), la lentille mince (s4.4) ou la visée (s7.2), selon la séance",
-        v(y.origin),
-        v(y.direction),
-        v(c.origin),
-        v(c.direction)
+        "trace-the-camera-ray-yours-from-along",
+        y_origin = v(y.origin),
+        y_direction = v(y.direction),
+        c_origin = v(c.origin),
+        c_direction = v(c.direction)
     )
 }
 
@@ -226,28 +223,26 @@ fn camera_ray(
 fn new_ray(y: &Step, c: &Step, before: &Step) -> String {
     let Some(at) = before.hit else {
         return say!(
-            "a ray after a miss: yours from {} along {}, the course's from {} along {}",
-            "un rayon après une absence d'intersection\u{a0}: le vôtre issu de {} selon {}, celui du cours issu de {} selon {}",
-            v(y.origin),
-            v(y.direction),
-            v(c.origin),
-            v(c.direction)
+            "trace-a-ray-after-a-miss-yours",
+            y_origin = v(y.origin),
+            y_direction = v(y.direction),
+            c_origin = v(c.origin),
+            c_direction = v(c.direction)
         );
     };
     let from = say!(
-        "the ray leaving the hit at P = {} (N = {}) along {}",
-        "le rayon qui quitte l'intersection en P = {} (N = {}) selon {}",
-        v(at.point),
-        v(at.normal),
-        v(c.direction)
+        "trace-the-ray-leaving-the-hit-at",
+        at_point = v(at.point),
+        at_normal = v(at.normal),
+        c_direction = v(c.direction)
     );
     if !apart(y.direction, c.direction) {
         return say!(
-            "{from}, {}: its origin, yours {}, the course's {}",
-            "{from}, {}\u{a0}: son origine, la vôtre {}, celle du cours {}",
-            exercise("s2.2", "Hit::spawn"),
-            v(y.origin),
-            v(c.origin)
+            "trace-its-origin-yours-the-course-s",
+            s2_spawn = exercise("s2.2", "Hit::spawn"),
+            y_origin = v(y.origin),
+            c_origin = v(c.origin),
+            from = from
         );
     }
     let (id, function) = match at.surface {
@@ -259,12 +254,12 @@ fn new_ray(y: &Step, c: &Step, before: &Step) -> String {
         ),
     };
     say!(
-        "{from}, {}, the incoming direction d = {}: its direction, yours {}, the course's {}",
-        "{from}, {}, la direction d'arrivée d = {}\u{a0}: sa direction, la vôtre {}, celle du cours {}",
-        exercise(id, function),
-        v(before.direction),
-        v(y.direction),
-        v(c.direction)
+        "trace-the-incoming-direction-d-its-direction",
+        id_function = exercise(id, function),
+        before_direction = v(before.direction),
+        y_direction = v(y.direction),
+        c_direction = v(c.direction),
+        from = from
     )
 }
 
@@ -297,10 +292,9 @@ fn hit(
         direction: c.direction,
     };
     let shown = say!(
-        "the ray from {} along {}",
-        "le rayon issu de {} selon {}",
-        v(c.origin),
-        v(c.direction)
+        "trace-the-ray-from-along",
+        c_origin = v(c.origin),
+        c_direction = v(c.direction)
     );
     let spheres = your_scene.spheres.iter().zip(&course_scene.spheres);
     for (index, (mine, course)) in spheres.enumerate() {
@@ -312,40 +306,38 @@ fn hit(
             })
         {
             return Some(say!(
-                "{shown} and sphere {index} (centre {}, radius {}), {}: yours gave {}, the course's gives {}",
-                "{shown} et la sphère {index} (centre {}, rayon {}), {}\u{a0}: le vôtre a obtenu {}, celui du cours obtient {}",
-                v(course.centre),
-                n(course.radius),
-                exercise("s1.2", "Sphere::intersect"),
-                distance(gave),
-                distance(expected)
+                "trace-and-sphere-centre-radius-yours-gave",
+                course_centre = v(course.centre),
+                course_radius = n(course.radius),
+                s1_intersect = exercise("s1.2", "Sphere::intersect"),
+                distance_gave = distance(gave),
+                distance_expected = distance(expected),
+                shown = shown,
+                index = index
             ));
         }
     }
     Some(say!(
-        "{shown}: yours met {}, the course's {}; every sphere's test agrees, so the nearest of them (exercise s1.3, Scene::nearest_sphere), or the meshes' tests (s5.1, s5.2, s6.1, s6.2) or the normal (s6.3), as far as the session goes",
-        "{shown}\u{a0}: le vôtre a rencontré {}, celui du cours {}\u{a0}; le test de chaque sphère concorde, donc la plus proche d'entre elles (exercice s1.3, Scene::nearest_sphere), ou les tests des maillages (s5.1, s5.2, s6.1, s6.2) ou la normale (s6.3), selon la séance",
-        met(y.hit),
-        met(c.hit)
+        "trace-yours-met-the-course-s-every",
+        y_hit = met(y.hit),
+        c_hit = met(c.hit),
+        shown = shown
     ))
 }
 
 /// A distance as the book writes it: `t = 4`, or no hit.
 fn distance(t: Option<Real>) -> String {
-    t.map_or(say!("no hit", "aucune intersection"), |t| {
-        format!("t = {}", n(t))
-    })
+    t.map_or(say!("trace-no-hit"), |t| format!("t = {}", n(t)))
 }
 
 /// A hit as the book writes it.
 fn met(hit: Option<Met>) -> String {
-    hit.map_or(say!("nothing", "rien"), |h| {
+    hit.map_or(say!("trace-nothing"), |h| {
         say!(
-            "object {} at t = {} (N = {})",
-            "l'objet {} en t = {} (N = {})",
-            h.object,
-            n(h.t),
-            v(h.normal)
+            "trace-object-at-t-n",
+            h_object = h.object,
+            h = n(h.t),
+            h_normal = v(h.normal)
         )
     })
 }
@@ -362,20 +354,18 @@ fn shading(yours: Colour, theirs: Colour, gamma: Real) -> Option<String> {
             .map(|x| course::render::film::display(x, gamma));
         return (display(yours) != course_levels).then(|| {
             say!(
-                "the display of the same radiance {}, {}: yours gave {:?}, the course's gives {:?}",
-                "l'affichage de la même luminance {}, {}\u{a0}: le vôtre a obtenu {:?}, celui du cours obtient {:?}",
-                v(theirs),
-                exercise("s2.1", "display"),
-                display(yours),
-                course_levels
+                "trace-the-display-of-the-same-radiance",
+                theirs = v(theirs),
+                exercise_s2 = exercise("s2.1", "display"),
+                yours = format!("{:?}", display(yours)),
+                course_levels = format!("{:?}", course_levels)
             )
         });
     }
     Some(say!(
-        "the light computed along the same rays and hits: yours {}, the course's {}: Lambert (exercise s1.4), the bounce's weight (s3.3), the light's cone and density (s4.1, s4.2) or the texture (s7.1), as far as the session goes",
-        "la lumière calculée le long des mêmes rayons et intersections\u{a0}: la vôtre {}, celle du cours {}\u{a0}: Lambert (exercice s1.4), le poids du rebond (s3.3), le cône de la source et sa densité (s4.1, s4.2) ou la texture (s7.1), selon la séance",
-        v(yours),
-        v(theirs)
+        "trace-the-light-computed-along-the-same",
+        yours = v(yours),
+        theirs = v(theirs)
     ))
 }
 

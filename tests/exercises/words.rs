@@ -3,6 +3,7 @@
 
 use std::sync::OnceLock;
 
+use raycourse::messages::catalogue::{Argument, Catalogue, decimals, files};
 use raycourse::messages::language::Language;
 
 /// The language chosen once, at the start of the run.
@@ -33,30 +34,78 @@ pub fn french() -> bool {
     LANGUAGE.get().copied().unwrap_or_default() == Language::French
 }
 
-/// A message in the checklist's language: `say!("english {x}", "français {x}")`,
-/// each a format string with the same arguments.
+/// The checklist's own messages, beside the library's: `messages/<code>/checklist.ftl`.
+const CHECKLIST: [(Language, &str); 2] = [
+    (
+        Language::English,
+        include_str!("../../messages/en/checklist.ftl"),
+    ),
+    (
+        Language::French,
+        include_str!("../../messages/fr/checklist.ftl"),
+    ),
+];
+
+/// The catalogue in the checklist's language, read on first use.
+fn catalogue() -> &'static Catalogue {
+    static CATALOGUE: OnceLock<Catalogue> = OnceLock::new();
+    CATALOGUE.get_or_init(|| {
+        let language = LANGUAGE.get().copied().unwrap_or_default();
+        let mut all = files(language).to_vec();
+        all.extend(
+            CHECKLIST
+                .iter()
+                .filter(|(l, _)| *l == language)
+                .map(|(_, text)| ("checklist.ftl", *text)),
+        );
+        Catalogue::new(language, &all)
+    })
+}
+
+/// The message `id` of the catalogue in the checklist's language, with `arguments`.
+pub fn message(id: &str, arguments: &[(&str, Argument)]) -> String {
+    catalogue().say(id, arguments)
+}
+
+/// A value as a message's argument: its text, as the checklist wrote it.
+pub fn text(value: &impl std::fmt::Display) -> Argument<'static> {
+    value.to_string().into()
+}
+
+/// A message of the catalogue in the checklist's language:
+/// `say!("generated-s2-l-gamma", radiance = n(radiance), gamma = n(gamma))`, each
+/// argument named as the message names it.
 #[macro_export]
 macro_rules! say {
-    ($english:literal, $french:literal $(, $arg:expr)* $(,)?) => {
-        if $crate::words::french() {
-            format!($french $(, $arg)*)
-        } else {
-            format!($english $(, $arg)*)
-        }
+    ($id:literal $(, $name:ident = $value:expr)* $(,)?) => {
+        $crate::words::message($id, &[$((stringify!($name), $crate::words::text(&$value))),*])
     };
 }
 
-/// A number's text with the language's decimal mark: `0.5`, or `0,5` in French.
+/// A number's text, its digits as the checklist chose them, with the decimal mark
+/// of the language, written by the catalogue: `0.50`, or `0,50` in French;
+/// `1.5e-4`, or `1,5e-4`.
 pub fn decimal(text: String) -> String {
-    if french() {
-        text.replace('.', ",")
-    } else {
-        text
+    let (mantissa, exponent) = match text.split_once('e') {
+        Some((mantissa, exponent)) => (mantissa, Some(exponent)),
+        None => (text.as_str(), None),
+    };
+    let (Some((_, fraction)), Ok(value)) = (mantissa.split_once('.'), mantissa.parse::<f64>())
+    else {
+        return text;
+    };
+    let written = message(
+        "checklist-number",
+        &[("value", decimals(value, fraction.len()))],
+    );
+    match exponent {
+        Some(exponent) => format!("{written}e{exponent}"),
+        None => written,
     }
 }
 
 /// The separator between a vector's components: `, ` in English, ` ; ` in French,
 /// where the comma is the decimal mark.
-pub fn separator() -> &'static str {
-    if french() { "\u{a0}; " } else { ", " }
+pub fn separator() -> String {
+    message("checklist-separator", &[])
 }

@@ -106,9 +106,9 @@ fn run_cases<T: std::fmt::Debug>(
     match runner.run(&inputs, |input| compare(input).map_err(TestCaseError::fail)) {
         Ok(()) => Ok(()),
         Err(TestError::Fail(why, _)) => Err(say!(
-            "{what} on a generated input, the simplest that differs from the course's answer: {}",
-            "{what} sur une entrée générée, la plus simple qui diffère de la réponse du cours\u{a0}: {}",
-            why.message()
+            "generated-common-on-a-generated-input-the-simplest",
+            why_message = why.message(),
+            what = what
         )),
         Err(TestError::Abort(why)) => Err(why.message().to_owned()),
     }
@@ -123,8 +123,9 @@ pub fn on_draws(what: &str, check: impl FnOnce() -> Result<(), String>) -> Outco
     }
     check().map_err(|why| {
         say!(
-            "{what} on generated numbers: {why}",
-            "{what} sur des nombres générés\u{a0}: {why}"
+            "generated-common-on-generated-numbers",
+            what = what,
+            why = why
         )
     })
 }
@@ -204,10 +205,13 @@ pub fn ulps(k: Real) -> Real {
 /// A message `yours gave G, the course's gives E`, then why, when a diagnosis found it.
 pub fn differs(case: &str, gave: &str, expected: &str, why: Option<String>) -> String {
     let why = why
-        .map(|w| say!("; {w}", "\u{a0}; {w}"))
+        .map(|w| say!("generated-common-message", w = w))
         .unwrap_or_default();
     say!(
-        "{case}: yours gave {gave}, the course's gives {expected}{why}",
-        "{case}\u{a0}: le vôtre a obtenu {gave}, celui du cours obtient {expected}{why}"
+        "generated-common-yours-gave-the-course-s-gives",
+        case = case,
+        gave = gave,
+        expected = expected,
+        why = why
     )
 }

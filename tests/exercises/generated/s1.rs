@@ -79,9 +79,12 @@ pub fn pixel_direction(yours: impl Fn(&Camera, u32, u32) -> Vec3) -> Outcome {
                 return Ok(());
             }
             let case = say!(
-                "W = {w}, H = {h}, alpha = {} degrees, pixel (row {row}, column {column})",
-                "W = {w}, H = {h}, alpha = {} degrés, pixel (ligne {row}, colonne {column})",
-                n(degrees)
+                "generated-s1-w-h-alpha-degrees-pixel-row",
+                value = n(degrees),
+                w = w,
+                h = h,
+                row = row,
+                column = column
             );
             let why = pixel_diagnosis(gave, expected, (w, h, fov), (row, column));
             Err(differs(&case, &v(gave), &v(expected), why))
@@ -99,16 +102,13 @@ fn pixel_diagnosis(
 ) -> Option<String> {
     if gave.z >= 0.0 || gave.z.is_nan() {
         let wide = if fov > PI / 2.0 {
-            say!(
-                " (H / (2 tan alpha) would change sign past 90 degrees)",
-                " (H / (2 tan alpha) changerait de signe au-delà de 90 degrés)"
-            )
+            say!("generated-s1-h-2-tan-alpha-would-change")
         } else {
             String::new()
         };
         return Some(say!(
-            "the camera looks down -z: the image plane is at z = -H / (2 tan(alpha/2)){wide}",
-            "la caméra regarde selon -z\u{a0}: le plan image est en z = -H / (2 tan(alpha/2)){wide}"
+            "generated-s1-the-camera-looks-down-z-the",
+            wide = wide
         ));
     }
     let scaled = gave * (expected.z / gave.z);
@@ -139,7 +139,7 @@ fn pixel_diagnosis(
     if !specific && let Some(theirs) = plane_of(gave, expected) {
         return Some(plane_rule(theirs, -expected.z, (w, h, fov)));
     }
-    (!why.is_empty()).then(|| why.join(&say!("; ", "\u{a0}; ")))
+    (!why.is_empty()).then(|| why.join(&say!("generated-s1-message")))
 }
 
 /// The rule of a pixel's x, `x = j - W/2 + 1/2`, when yours is `off` from the
@@ -147,21 +147,18 @@ fn pixel_diagnosis(
 fn column_rule(off: Real, w: u32, j: u32, x: Real) -> String {
     if w % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
         say!(
-            "the centre of pixel j is at x = j - W/2 + 1/2 for any W: here W = {w} is odd, so W/2 = {} (an integer division drops the half)",
-            "le centre du pixel j est en x = j - W/2 + 1/2 pour tout W\u{a0}: ici W = {w} est impair, donc W/2 = {} (une division entière perd la moitié)",
-            n(w as Real / 2.0)
+            "generated-s1-the-centre-of-pixel-j-is",
+            w2 = n(w as Real / 2.0),
+            w = w
         )
     } else if (off.abs() - 0.5).abs() < 1e-6 {
-        say!(
-            "the centre of pixel j is at x = j - W/2 + 1/2: the half pixel is off",
-            "le centre du pixel j est en x = j - W/2 + 1/2\u{a0}: le demi-pixel est faux"
-        )
+        say!("generated-s1-the-centre-of-pixel-j-is-2")
     } else {
         say!(
-            "the centre of pixel j is at x = j - W/2 + 1/2 (here j = {j}, x = {}): yours is {} off",
-            "le centre du pixel j est en x = j - W/2 + 1/2 (ici j = {j}, x = {})\u{a0}: le vôtre est décalé de {}",
-            n(x),
-            n(off)
+            "generated-s1-the-centre-of-pixel-j-is-3",
+            value = n(x),
+            off = n(off),
+            j = j
         )
     }
 }
@@ -171,22 +168,19 @@ fn column_rule(off: Real, w: u32, j: u32, x: Real) -> String {
 /// row `i` of an image `h` high.
 fn row_rule(off: Real, from_top: bool, h: u32, i: u32, y: Real) -> String {
     if from_top {
-        say!(
-            "rows count from the top of the image and y from the bottom: y = i - H/2 + 1/2 with i = H - 1 - row = {i}",
-            "les lignes se comptent depuis le haut de l'image et y depuis le bas\u{a0}: y = i - H/2 + 1/2 avec i = H - 1 - ligne = {i}"
-        )
+        say!("generated-s1-rows-count-from-the-top-of", i = i)
     } else if h % 2 == 1 && (off.abs() - 0.5).abs() < 1e-6 {
         say!(
-            "the centre of row i is at y = i - H/2 + 1/2 for any H: here H = {h} is odd, so H/2 = {} (an integer division drops the half)",
-            "le centre de la ligne i est en y = i - H/2 + 1/2 pour tout H\u{a0}: ici H = {h} est impair, donc H/2 = {} (une division entière perd la moitié)",
-            n(h as Real / 2.0)
+            "generated-s1-the-centre-of-row-i-is",
+            h2 = n(h as Real / 2.0),
+            h = h
         )
     } else {
         say!(
-            "the centre of row i = H - 1 - row = {i} is at y = i - H/2 + 1/2 = {}: yours is {} off",
-            "le centre de la ligne i = H - 1 - ligne = {i} est en y = i - H/2 + 1/2 = {}\u{a0}: le vôtre est décalé de {}",
-            n(y),
-            n(off)
+            "generated-s1-the-centre-of-row-i-h",
+            y = n(y),
+            off = n(off),
+            i = i
         )
     }
 }
@@ -197,23 +191,17 @@ fn plane_rule(theirs: Real, plane: Real, (w, h, fov): (u32, u32, Real)) -> Strin
     let wrong_tangent = (h as Real) / (2.0 * fov.tan());
     let width = (w as Real) / (2.0 * (fov / 2.0).tan());
     let detail = if near(theirs, wrong_tangent, plane, 1e-3) {
-        say!(
-            " (yours is H / (2 tan alpha))",
-            " (la vôtre est H / (2 tan alpha))"
-        )
+        say!("generated-s1-yours-is-h-2-tan-alpha")
     } else if near(theirs, width, plane, 1e-3) && w != h {
-        say!(
-            " (yours uses W: the field of view is vertical)",
-            " (la vôtre prend W\u{a0}: le champ de vision est vertical)"
-        )
+        say!("generated-s1-yours-uses-w-the-field-of")
     } else {
         String::new()
     };
     say!(
-        "the image plane lies at H / (2 tan(alpha/2)) = {} from the eye, alpha the vertical field of view in radians; yours at {}{detail}",
-        "le plan image est à H / (2 tan(alpha/2)) = {} de l'œil, alpha le champ de vision vertical en radians\u{a0}; le vôtre à {}{detail}",
-        n(plane),
-        n(theirs)
+        "generated-s1-the-image-plane-lies-at-h",
+        plane = n(plane),
+        theirs = n(theirs),
+        detail = detail
     )
 }
 
@@ -368,18 +356,15 @@ fn compare_distance(
         return Ok(());
     }
     let case = say!(
-        "a sphere of radius {} at {}, the ray from {} along {}",
-        "une sphère de rayon {} en {}, le rayon issu de {} selon {}",
-        n(radius),
-        v(centre),
-        v(origin),
-        v(direction)
+        "generated-s1-a-sphere-of-radius-at-the",
+        radius = n(radius),
+        centre = v(centre),
+        origin = v(origin),
+        direction = v(direction)
     );
     let (gave_t, expected_t) = apart(gave.unwrap_or(0.0), expected.unwrap_or(0.0));
     let show = |t: Option<Real>, text: String| {
-        t.map_or(say!("no hit", "aucune intersection"), |_| {
-            format!("t = {text}")
-        })
+        t.map_or(say!("generated-s1-no-hit"), |_| format!("t = {text}"))
     };
     let why = distance_diagnosis(
         gave,
@@ -416,47 +401,31 @@ fn distance_diagnosis(
     let close = |t: Real, r: Real| (t - r).abs() <= 1e-3 * radius + ulps(1024.0) * s.length();
     Some(match (gave, expected, place) {
         (_, _, Place::Outside { distance, .. }) if !textbook && gave == textbook_gives => say!(
-            "the sphere is {} radii away: the textbook discriminant (s.d)^2 - (|s|^2 - R^2) loses R^2 in the rounding of |s|^2; compute it as R^2 - |s - (s.d) d|^2",
-            "la sphère est à {} rayons\u{a0}: le discriminant du manuel (s.d)^2 - (|s|^2 - R^2) perd R^2 dans l'arrondi de |s|^2\u{a0}; calculez-le comme R^2 - |s - (s.d) d|^2",
-            n(distance)
+            "generated-s1-the-sphere-is-radii-away-the",
+            distance = n(distance)
         ),
         (Some(t), _, Place::Behind { .. })
             if t < 0.0 || close(t, near_root) || close(t, far_root) =>
         {
-            say!(
-                "the sphere is behind the ray: both roots are negative, and only t > 0 is a hit",
-                "la sphère est derrière le rayon\u{a0}: les deux racines sont négatives, et seul t > 0 est une intersection"
-            )
+            say!("generated-s1-the-sphere-is-behind-the-ray")
         }
-        (Some(t), _, Place::Surface) if t <= 0.0 => say!(
-            "the ray starts on the sphere, so t = 0 is its own start, not a hit: only t > 0 is a hit (here where it leaves, if it goes in)",
-            "le rayon part de la sphère\u{a0}: t = 0 est son propre départ, pas une intersection\u{a0}; seul t > 0 en est une (ici là où il sort, s'il entre)"
-        ),
-        (Some(t), _, _) if t <= 0.0 => say!(
-            "only t > 0 is a hit: yours is behind the ray's origin",
-            "seul t > 0 est une intersection\u{a0}: la vôtre est derrière l'origine du rayon"
-        ),
-        (Some(t), Some(_), Place::Inside { .. }) if close(t, near_root) => say!(
-            "from inside the sphere the near root -s.d - sqrt(Delta) is negative: the hit is the far root -s.d + sqrt(Delta)",
-            "depuis l'intérieur de la sphère la racine proche -s.d - sqrt(Delta) est négative\u{a0}: l'intersection est la racine lointaine -s.d + sqrt(Delta)"
-        ),
-        (Some(t), Some(_), Place::Outside { .. }) if close(t, far_root) => say!(
-            "from outside, the hit is the nearer root -s.d - sqrt(Delta), where the ray enters; yours is where it leaves",
-            "depuis l'extérieur, l'intersection est la racine proche -s.d - sqrt(Delta), où le rayon entre\u{a0}; la vôtre est où il sort"
-        ),
-        (None, Some(_), Place::Surface) => say!(
-            "the ray starts on the sphere and goes in: its near root is 0, its own start, but the far root -s.d + sqrt(Delta) is a hit",
-            "le rayon part de la sphère et y entre\u{a0}: sa racine proche vaut 0, son propre départ, mais la racine lointaine -s.d + sqrt(Delta) est une intersection"
-        ),
-        (None, Some(_), Place::Inside { .. }) => say!(
-            "from inside the sphere the near root is negative, but the far root -s.d + sqrt(Delta) is a hit",
-            "depuis l'intérieur de la sphère la racine proche est négative, mais la racine lointaine -s.d + sqrt(Delta) est une intersection"
-        ),
-        (_, _, Place::Outside { miss, .. }) if (miss - 1.0).abs() < 0.01 => say!(
-            "the ray grazes the sphere, its line {} radius from the centre: Delta = R^2 - |s - (s.d) d|^2 decides, and its sign must be right",
-            "le rayon frôle la sphère, sa droite à {} rayon du centre\u{a0}: Delta = R^2 - |s - (s.d) d|^2 décide, et son signe doit être juste",
-            n(miss)
-        ),
+        (Some(t), _, Place::Surface) if t <= 0.0 => {
+            say!("generated-s1-the-ray-starts-on-the-sphere")
+        }
+        (Some(t), _, _) if t <= 0.0 => say!("generated-s1-only-t-0-is-a-hit"),
+        (Some(t), Some(_), Place::Inside { .. }) if close(t, near_root) => {
+            say!("generated-s1-from-inside-the-sphere-the-near")
+        }
+        (Some(t), Some(_), Place::Outside { .. }) if close(t, far_root) => {
+            say!("generated-s1-from-outside-the-hit-is-the")
+        }
+        (None, Some(_), Place::Surface) => say!("generated-s1-the-ray-starts-on-the-sphere-2"),
+        (None, Some(_), Place::Inside { .. }) => {
+            say!("generated-s1-from-inside-the-sphere-the-near-2")
+        }
+        (_, _, Place::Outside { miss, .. }) if (miss - 1.0).abs() < 0.01 => {
+            say!("generated-s1-the-ray-grazes-the-sphere-its", miss = n(miss))
+        }
         _ => return None,
     })
 }
@@ -529,24 +498,16 @@ fn nearest_differs(
     let listed: Vec<String> = list
         .iter()
         .enumerate()
-        .map(|(i, (c, r))| {
-            say!(
-                "{i}: radius {} at {}",
-                "{i}\u{a0}: rayon {} en {}",
-                n(*r),
-                v(*c)
-            )
-        })
+        .map(|(i, (c, r))| say!("generated-s1-radius-at", r = n(*r), c = v(*c), i = i))
         .collect();
     let case = say!(
-        "spheres {}, the ray from the origin along {}",
-        "sphères {}, le rayon issu de l'origine selon {}",
-        listed.join(&say!("; ", "\u{a0}; ")),
-        v(d)
+        "generated-s1-spheres-the-ray-from-the-origin",
+        s1_message = listed.join(&say!("generated-s1-message")),
+        d = v(d)
     );
     let show = |hit: Option<(Real, usize)>| {
-        hit.map_or(say!("no hit", "aucune intersection"), |(t, i)| {
-            say!("sphere {i} at t = {}", "sphère {i} en t = {}", n(t))
+        hit.map_or(say!("generated-s1-no-hit"), |(t, i)| {
+            say!("generated-s1-sphere-at-t", value = n(t), i = i)
         })
     };
     let why = match (gave, expected) {
@@ -554,14 +515,14 @@ fn nearest_differs(
             if i > j && list[i] == list[j] && (t - e).abs() <= 1e-9 * e.abs() =>
         {
             Some(say!(
-                "spheres {j} and {i} are met at the same distance: the first of the list wins (a later sphere replaces the nearest only when strictly nearer, t < t_nearest)",
-                "les sphères {j} et {i} sont rencontrées à la même distance\u{a0}: la première de la liste l'emporte (une sphère plus loin dans la liste ne remplace la plus proche que si elle est strictement plus proche, t < t_plus_proche)"
+                "generated-s1-spheres-and-are-met-at-the",
+                j = j,
+                i = i
             ))
         }
-        (Some((t, _)), Some((e, _))) if t > e => Some(say!(
-            "the nearest hit is the smallest t of all the spheres met, not the first met in the list",
-            "l'intersection la plus proche est le plus petit t de toutes les sphères rencontrées, pas la première rencontrée dans la liste"
-        )),
+        (Some((t, _)), Some((e, _))) if t > e => {
+            Some(say!("generated-s1-the-nearest-hit-is-the-smallest"))
+        }
         _ => None,
     };
     differs(&case, &show(gave), &show(expected), why)
@@ -613,13 +574,12 @@ pub fn lambert(yours: impl Fn(&PointLight, Vec3, Vec3, Colour) -> Colour) -> Out
                 return Ok(());
             }
             let case = say!(
-                "a light of power {} at {}, the point {} with normal {} and albedo {}",
-                "une source de puissance {} en {}, le point {} de normale {} et d'albédo {}",
-                n(intensity),
-                v(light.position),
-                v(point),
-                v(normal),
-                v(albedo)
+                "generated-s1-a-light-of-power-at-the",
+                intensity = n(intensity),
+                light_position = v(light.position),
+                point = v(point),
+                normal = v(normal),
+                albedo = v(albedo)
             );
             let why = lambert_diagnosis(gave, expected, normal.dot(towards), distance)
                 .or_else(|| lit_from_the_origin(gave, (&course, point, normal, albedo)));
@@ -633,9 +593,8 @@ pub fn lambert(yours: impl Fn(&PointLight, Vec3, Vec3, Colour) -> Colour) -> Out
 fn lambert_diagnosis(gave: Colour, expected: Colour, cos: Real, d: Real) -> Option<String> {
     if cos <= 0.0 {
         return Some(say!(
-            "the surface faces away from the light (<N, l> = {}): it gets no light, max(0, <N, l>)",
-            "la surface tourne le dos à la source (<N, l> = {})\u{a0}: elle ne reçoit rien, max(0, <N, l>)",
-            n(cos)
+            "generated-s1-the-surface-faces-away-from-the",
+            cos = n(cos)
         ));
     }
     let channel = expected.abs().max_position();
@@ -658,56 +617,19 @@ fn lit_from_the_origin(
     let cos = normal.dot(light.position.normalize()).max(0.0);
     let origin = light.intensity / (4.0 * PI * d2) * cos * albedo / PI;
     let full = light.intensity / (4.0 * PI * d2) / PI;
-    ((gave - origin).abs().max_element() <= ulps(64.0) * full).then(|| {
-        say!(
-            "l points from the shaded point P to the light: l = (P_light - P) / |P_light - P|, not P_light / |P_light|",
-            "l va du point éclairé P vers la source\u{a0}: l = (P_source - P) / |P_source - P|, et non P_source / |P_source|"
-        )
-    })
+    ((gave - origin).abs().max_element() <= ulps(64.0) * full)
+        .then(|| say!("generated-s1-l-points-from-the-shaded-point"))
 }
 
 /// The ratios of a wrong Lambert shading to the right one that name a mistake,
 /// with the rule each breaks: `cos` is `<N, l>`, `d` the distance to the light.
 fn lambert_rules(cos: Real, d: Real) -> [(Real, String); 6] {
     [
-        (
-            PI,
-            say!(
-                "the diffuse BRDF is albedo / pi: the 1/pi is missing",
-                "la BRDF diffuse est albédo / pi\u{a0}: il manque le 1/pi"
-            ),
-        ),
-        (
-            4.0 * PI,
-            say!(
-                "a point light of power I gives I / (4 pi d^2): the 1/(4 pi) is missing",
-                "une source ponctuelle de puissance I donne I / (4 pi d^2)\u{a0}: il manque le 1/(4 pi)"
-            ),
-        ),
-        (
-            d,
-            say!(
-                "yours is d times the course's: the light falls off as 1/d^2, and l is the unit vector to the light (the vector to it divided by d)",
-                "le vôtre vaut d fois celui du cours\u{a0}: la lumière décroît en 1/d^2, et l est le vecteur unitaire vers la source (le vecteur divisé par d)"
-            ),
-        ),
-        (
-            d * d,
-            say!(
-                "the light falls off as 1/d^2: the falloff is missing",
-                "la lumière décroît en 1/d^2\u{a0}: la décroissance manque"
-            ),
-        ),
-        (
-            1.0 / cos,
-            say!(
-                "Lambert's cosine <N, l> is missing",
-                "il manque le cosinus de Lambert <N, l>"
-            ),
-        ),
-        (
-            1.0 / PI,
-            say!("1/pi is counted twice", "le 1/pi est compté deux fois"),
-        ),
+        (PI, say!("generated-s1-the-diffuse-brdf-is-albedo-pi")),
+        (4.0 * PI, say!("generated-s1-a-point-light-of-power-i")),
+        (d, say!("generated-s1-yours-is-d-times-the-course")),
+        (d * d, say!("generated-s1-the-light-falls-off-as-1")),
+        (1.0 / cos, say!("generated-s1-lambert-s-cosine-n-l-is")),
+        (1.0 / PI, say!("generated-s1-1-pi-is-counted-twice")),
     ]
 }

@@ -33,10 +33,9 @@ pub fn display(yours: impl Fn(Real, Real) -> u8) -> Outcome {
             return Ok(());
         }
         let case = say!(
-            "L = {}, gamma = {}",
-            "L = {}, gamma = {}",
-            n(radiance),
-            n(gamma)
+            "generated-s2-l-gamma",
+            radiance = n(radiance),
+            gamma = n(gamma)
         );
         let why = display_diagnosis(gave, radiance, gamma);
         Err(differs(
@@ -51,16 +50,10 @@ pub fn display(yours: impl Fn(Real, Real) -> u8) -> Outcome {
 /// Which rule of the display level `gave` breaks.
 fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
     if radiance.is_nan() || radiance < 0.0 {
-        return Some(say!(
-            "a negative or NaN radiance shows as black, 0: clamp it at 0 before the power",
-            "une luminance négative ou NaN s'affiche en noir, 0\u{a0}: ramenez-la à 0 avant la puissance"
-        ));
+        return Some(say!("generated-s2-a-negative-or-nan-radiance-shows"));
     }
     if radiance == Real::INFINITY {
-        return Some(say!(
-            "an infinite radiance is the brightest there is: min(255, L^(1/gamma)) = 255",
-            "une luminance infinie est la plus claire qui soit\u{a0}: min(255, L^(1/gamma)) = 255"
-        ));
+        return Some(say!("generated-s2-an-infinite-radiance-is-the-brightest"));
     }
     let level = |x: Real| x.clamp(0.0, 255.0);
     let exact = level(radiance.powf(1.0 / gamma));
@@ -69,26 +62,18 @@ fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
     let rules = [
         (
             gave == exact.floor(),
-            say!(
-                "the level is L^(1/gamma) = {} rounded to the nearest, not down",
-                "le niveau est L^(1/gamma) = {} arrondi au plus proche, pas par défaut",
-                n(exact)
-            ),
+            say!("generated-s2-the-level-is-l-1-gamma", exact = n(exact)),
         ),
         (
             gave == level(radiance.powf(1.0 / 2.2)).round() && gamma != 2.2,
             say!(
-                "use the gamma given, here {}, not 2.2",
-                "utilisez le gamma donné, ici {}, et non 2,2",
-                n(gamma)
+                "generated-s2-use-the-gamma-given-here-not",
+                gamma = n(gamma)
             ),
         ),
         (
             gave == level(radiance.powf(gamma)).round(),
-            say!(
-                "the level is L^(1/gamma): the exponent is 1/gamma, not gamma",
-                "le niveau est L^(1/gamma)\u{a0}: l'exposant est 1/gamma, pas gamma"
-            ),
+            say!("generated-s2-the-level-is-l-1-gamma-2"),
         ),
     ];
     let named: Vec<String> = rules
@@ -96,7 +81,7 @@ fn display_diagnosis(gave: u8, radiance: Real, gamma: Real) -> Option<String> {
         .filter(|(holds, _)| *holds)
         .map(|(_, why)| why)
         .collect();
-    (!named.is_empty()).then(|| named.join(&say!("; or ", "\u{a0}; ou ")))
+    (!named.is_empty()).then(|| named.join(&say!("generated-s2-or")))
 }
 
 /// How many powers of ten of its own size a generated object may lie from the
@@ -179,18 +164,18 @@ pub fn spawn(yours: impl Fn(&Hit, Vec3) -> Ray) -> Outcome {
                 let ray = yours(&student_hit(&hit), d);
                 if let Some(why) = spawn_fault(&hit, &ball, &ray, d) {
                     let case = say!(
-                        "the hit point {} with normal {} on a sphere of radius {} at {}, the new ray along {}",
-                        "le point d'intersection {} de normale {} sur une sphère de rayon {} en {}, le nouveau rayon selon {}",
-                        v(hit.point),
-                        v(hit.normal),
-                        n(radius),
-                        v(centre),
-                        v(d)
+                        "generated-s2-the-hit-point-with-normal-on",
+                        hit_point = v(hit.point),
+                        hit_normal = v(hit.normal),
+                        radius = n(radius),
+                        centre = v(centre),
+                        d = v(d)
                     );
                     return Err(say!(
-                        "{case}: yours starts at {}; {why}",
-                        "{case}\u{a0}: le vôtre part de {}\u{a0}; {why}",
-                        v(ray.origin)
+                        "generated-s2-yours-starts-at",
+                        ray_origin = v(ray.origin),
+                        case = case,
+                        why = why
                     ));
                 }
             }
@@ -216,40 +201,33 @@ fn spawn_fault(
     let reach = 1e-3 * radius + 4.0 * hit.offset.length();
     let moved = ray.origin.distance(hit.point);
     if !near_vec(ray.direction, d, ulps(8.0)) {
-        Some(say!(
-            "the new ray keeps the direction it is given",
-            "le nouveau rayon garde la direction donnée"
-        ))
+        Some(say!("generated-s2-the-new-ray-keeps-the-direction"))
     } else if turned && again.is_some_and(|t| going_out || t < 0.5 * chord) {
         Some(say!(
-            "{} it meets its sphere at t = {}: the hit's normal N was turned to face the ray, so it points into the sphere here; the side a new ray starts on is the side its direction takes against the offset (from the geometric normal), not against N",
-            "{} il rencontre sa sphère en t = {}\u{a0}: la normale N de l'intersection a été tournée vers le rayon, elle pointe donc ici dans la sphère\u{a0}; le côté d'où part un nouveau rayon est celui que prend sa direction par rapport au décalage (tiré de la normale géométrique), pas par rapport à N",
-            if going_out {
-                say!("Leaving outwards", "En sortant")
+            "generated-s2-it-meets-its-sphere-at-t",
+            going_in = if going_out {
+                say!("generated-s2-leaving-outwards")
             } else {
-                say!("Going in", "En entrant")
+                say!("generated-s2-going-in")
             },
-            n(again.unwrap_or(0.0))
+            again = n(again.unwrap_or(0.0))
         ))
     } else if going_out && again.is_some() {
         Some(say!(
-            "leaving outwards it meets its own sphere again at t = {} (shadow acne): push the origin off the surface by the error bound, along N on the side it leaves by",
-            "en sortant il rencontre de nouveau sa propre sphère en t = {} (acné d'ombre)\u{a0}: décalez l'origine hors de la surface de la borne d'erreur, selon N du côté où il part",
-            n(again.unwrap_or(0.0))
+            "generated-s2-leaving-outwards-it-meets-its-own",
+            again = n(again.unwrap_or(0.0))
         ))
     } else if !going_out && again.is_none_or(|t| t < 0.5 * chord) {
         Some(say!(
-            "going in it should meet the far side, about {} away, and meets {}: the origin must be pushed to the side the ray leaves by, here inwards (-N)",
-            "en entrant il devrait rencontrer le côté opposé, à environ {}, et rencontre {}\u{a0}: l'origine doit être décalée du côté où part le rayon, ici vers l'intérieur (-N)",
-            n(chord),
-            again.map_or(say!("nothing", "rien"), |t| format!("t = {}", n(t)))
+            "generated-s2-going-in-it-should-meet-the",
+            chord = n(chord),
+            s2_nothing = again.map_or(say!("generated-s2-nothing"), |t| format!("t = {}", n(t)))
         ))
     } else if moved > reach {
         Some(say!(
-            "the origin moved {} from the hit point, more than a thousandth of the radius {}: the offset follows the point's error bound, not a fixed epsilon",
-            "l'origine s'est éloignée de {} du point d'intersection, plus d'un millième du rayon {}\u{a0}: le décalage suit la borne d'erreur du point, pas un epsilon fixe",
-            n(moved),
-            n(radius)
+            "generated-s2-the-origin-moved-from-the-hit",
+            moved = n(moved),
+            radius = n(radius)
         ))
     } else {
         None
@@ -283,22 +261,21 @@ pub fn spawn_towards(yours: impl Fn(&Hit, Vec3) -> (Ray, Real)) -> Outcome {
             let from_point = hit.point.distance(light);
             let why = towards_rule(ray.direction, towards, (distance, from_origin, from_point));
             let case = say!(
-                "the hit point {} with normal {}, a light at {}",
-                "le point d'intersection {} de normale {}, une source en {}",
-                v(hit.point),
-                v(hit.normal),
-                v(light)
+                "generated-s2-the-hit-point-with-normal-a",
+                hit_point = v(hit.point),
+                hit_normal = v(hit.normal),
+                light = v(light)
             );
             let (gave, expected) = apart(distance, from_origin);
             let gave = say!(
-                "the direction {} at distance {gave}",
-                "la direction {} à la distance {gave}",
-                v(ray.direction)
+                "generated-s2-the-direction-at-distance",
+                ray_direction = v(ray.direction),
+                gave = gave
             );
             let expected = say!(
-                "the direction {} at distance {expected}",
-                "la direction {} à la distance {expected}",
-                v(towards)
+                "generated-s2-the-direction-at-distance-2",
+                towards = v(towards),
+                expected = expected
             );
             Err(differs(&case, &gave, &expected, Some(why)))
         },
@@ -315,25 +292,13 @@ fn towards_rule(
 ) -> String {
     let direction_right = near_vec(direction, towards, ulps(64.0));
     if !direction_right && near_vec(direction.normalize(), towards, ulps(64.0)) {
-        say!(
-            "the direction is a unit vector: divide the vector to the light by its length",
-            "la direction est un vecteur unitaire\u{a0}: divisez le vecteur vers la source par sa longueur"
-        )
+        say!("generated-s2-the-direction-is-a-unit-vector")
     } else if !direction_right {
-        say!(
-            "the direction is the unit vector from the hit point to the light",
-            "la direction est le vecteur unitaire du point d'intersection vers la source"
-        )
+        say!("generated-s2-the-direction-is-the-unit-vector")
     } else if (distance - from_point).abs() <= ulps(64.0) * from_origin {
-        say!(
-            "the distance is the light's from the ray's own origin, which the offset moved, not from the hit point",
-            "la distance est celle de la source depuis l'origine du rayon, que le décalage a déplacée, pas depuis le point d'intersection"
-        )
+        say!("generated-s2-the-distance-is-the-light-s")
     } else {
-        say!(
-            "the distance is |light - origin|, the length from the ray's origin to the light",
-            "la distance est |source - origine|, la longueur de l'origine du rayon à la source"
-        )
+        say!("generated-s2-the-distance-is-light-origin-the")
     }
 }
 
@@ -370,30 +335,17 @@ pub fn reflect(yours: impl Fn(Vec3, Vec3) -> Vec3) -> Outcome {
         }
         let along = d.dot(normal);
         let why = if near_vec(gave, -expected, ulps(64.0)) {
-            say!(
-                "yours points the other way: r = d - 2 (d . N) N",
-                "le vôtre pointe dans l'autre sens\u{a0}: r = d - 2 (d . N) N"
-            )
+            say!("generated-s2-yours-points-the-other-way-r")
         } else if gave == d {
-            say!(
-                "yours leaves d as it is; every ray the mirror meets turns, even a grazing one, here d . N = {}: r = d - 2 (d . N) N",
-                "le vôtre laisse d tel quel\u{a0}; tout rayon qui touche le miroir repart, même rasant, ici d . N = {}\u{a0}: r = d - 2 (d . N) N",
-                n(along)
-            )
+            say!("generated-s2-yours-leaves-d-as-it-is", along = n(along))
         } else if near_vec(gave, d - along * normal, ulps(64.0)) {
-            say!(
-                "yours removes the normal part; subtracted twice, it turns around: r = d - 2 (d . N) N",
-                "le vôtre retire la partie normale\u{a0}; retranchée deux fois, elle se retourne\u{a0}: r = d - 2 (d . N) N"
-            )
+            say!("generated-s2-yours-removes-the-normal-part-subtracted")
         } else if near_vec(gave, d + 2.0 * along * normal, ulps(64.0)) {
-            say!(
-                "the sign: r = d - 2 (d . N) N",
-                "le signe\u{a0}: r = d - 2 (d . N) N"
-            )
+            say!("generated-s2-the-sign-r-d-2-d")
         } else {
-            say!("r = d - 2 (d . N) N", "r = d - 2 (d . N) N")
+            say!("generated-s2-r-d-2-d-n-n")
         };
-        let case = say!("d = {}, N = {}", "d = {}, N = {}", v(d), v(normal));
+        let case = say!("generated-s2-d-n", d = v(d), normal = v(normal));
         Err(differs(&case, &v(gave), &v(expected), Some(why)))
     })
 }
@@ -422,21 +374,13 @@ pub fn refract(yours: impl Fn(Vec3, Vec3, Real) -> Option<Vec3>) -> Outcome {
         if same_refraction(gave, expected) {
             return Ok(());
         }
-        let show = |t: Option<Vec3>| {
-            t.map_or(
-                say!(
-                    "none (total internal reflection)",
-                    "aucune direction (réflexion totale interne)"
-                ),
-                v,
-            )
-        };
+        let show =
+            |t: Option<Vec3>| t.map_or(say!("generated-s2-none-total-internal-reflection"), v);
         let case = say!(
-            "d = {}, N = {}, eta = {}",
-            "d = {}, N = {}, eta = {}",
-            v(d),
-            v(normal),
-            n(eta)
+            "generated-s2-d-n-eta",
+            d = v(d),
+            normal = v(normal),
+            eta = n(eta)
         );
         let why = refract_rule((d, normal, eta), gave, expected);
         Err(differs(&case, &show(gave), &show(expected), Some(why)))
@@ -488,29 +432,15 @@ fn refract_rule(
     let sin2 = sin2_transmitted(d, normal, eta);
     let inverse = course::materials::optics::refract(d, normal, 1.0 / eta);
     match (gave, expected) {
-        _ if same_refraction(gave, inverse) => say!(
-            "eta is n1 / n2, the index the ray leaves over the index it enters; yours used n2 / n1",
-            "eta vaut n1 / n2, l'indice que le rayon quitte sur celui où il entre\u{a0}; le vôtre a pris n2 / n1"
-        ),
+        _ if same_refraction(gave, inverse) => say!("generated-s2-eta-is-n1-n2-the-index"),
         (Some(_), None) => say!(
-            "total internal reflection: eta^2 sin^2(theta_1) = {} > 1, so there is no refracted ray",
-            "réflexion totale interne\u{a0}: eta^2 sin^2(theta_1) = {} > 1, donc pas de rayon réfracté",
-            n(sin2)
+            "generated-s2-total-internal-reflection-eta-2-sin",
+            sin2 = n(sin2)
         ),
-        (None, Some(_)) => say!(
-            "eta^2 sin^2(theta_1) = {} <= 1: the ray refracts",
-            "eta^2 sin^2(theta_1) = {} <= 1\u{a0}: le rayon est réfracté",
-            n(sin2)
-        ),
+        (None, Some(_)) => say!("generated-s2-eta-2-sin-2-theta-1", sin2 = n(sin2)),
         (Some(g), Some(e)) if (g.dot(normal) + e.dot(normal)).abs() <= Real::EPSILON.sqrt() => {
-            say!(
-                "the refracted ray goes on through the surface: its normal part is -cos(theta_2) N",
-                "le rayon réfracté traverse la surface\u{a0}: sa partie normale vaut -cos(theta_2) N"
-            )
+            say!("generated-s2-the-refracted-ray-goes-on-through")
         }
-        _ => say!(
-            "t = eta (d - (d . N) N) - sqrt(1 - eta^2 sin^2(theta_1)) N",
-            "t = eta (d - (d . N) N) - sqrt(1 - eta^2 sin^2(theta_1)) N"
-        ),
+        _ => say!("generated-s2-t-eta-d-d-n-n"),
     }
 }

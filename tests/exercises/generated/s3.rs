@@ -25,18 +25,14 @@ fn unit_above(w: Vec3, u1: Real, u2: Real) -> Result<(), String> {
         return Ok(());
     }
     let gave = say!(
-        "{} gave {}: expected a unit vector with z >= 0",
-        "{} donne {}, au lieu d'un vecteur unitaire avec z >= 0",
-        at(u1, u2),
-        v(w)
+        "generated-s3-gave-expected-a-unit-vector-with",
+        u1_u2 = at(u1, u2),
+        w = v(w)
     );
     if w.is_finite() {
         return Err(gave);
     }
-    Err(say!(
-        "{gave}; every u in [0, 1) gives a direction, 0 included: a division by u (or by 0) is undefined there, as with tan^2(theta) = (1 - u2) / u2; r = sqrt(1 - u2) and z = sqrt(u2) divide by nothing",
-        "{gave}\u{a0}; tout u de [0, 1) donne une direction, 0 compris\u{a0}: une division par u (ou par 0) n'y est pas définie, comme avec tan^2(theta) = (1 - u2) / u2\u{a0}; r = sqrt(1 - u2) et z = sqrt(u2) ne divisent par rien"
-    ))
+    Err(say!("generated-s3-every-u-in-0-1-gives", gave = gave))
 }
 
 /// Exercise s3.1 by its distribution: at the end points a unit vector above the
@@ -95,7 +91,7 @@ pub fn frame(yours: impl Fn(Vec3) -> Frame) -> Outcome {
             return Ok(());
         };
         let course = course::maths::frame::Frame::new(normal);
-        let case = say!("N = {}", "N = {}", v(normal));
+        let case = say!("generated-s3-n", normal = v(normal));
         Err(differs(
             &case,
             &frame_text(f.t1, f.t2, f.n),
@@ -109,20 +105,12 @@ pub fn frame(yours: impl Fn(Vec3) -> Frame) -> Outcome {
 /// where the rule broken is one of size or angle, with why it goes wrong there.
 fn frame_fault(f: &Frame, normal: Vec3) -> Option<String> {
     if (f.n - normal).length() > ulps(256.0) {
-        return Some(say!(
-            "N itself is the frame's third axis: keep the normal given",
-            "N lui-même est le troisième axe du repère\u{a0}: gardez la normale donnée"
-        ));
+        return Some(say!("generated-s3-n-itself-is-the-frame-s"));
     }
     if let Some(why) = measure_fault(f, normal) {
         return Some(why + &pole_hint(normal));
     }
-    (f.t1.cross(f.t2).dot(normal) < 0.0).then(|| {
-        say!(
-            "T1 x T2 = -N: the frame is left-handed; the chapter's is right-handed, T1 x T2 = N (exchange T1 and T2, or turn one over)",
-            "T1 x T2 = -N\u{a0}: le repère est indirect\u{a0}; celui du chapitre est direct, T1 x T2 = N (échangez T1 et T2, ou retournez l'un d'eux)"
-        )
-    })
+    (f.t1.cross(f.t2).dot(normal) < 0.0).then(|| say!("generated-s3-t1-x-t2-n-the-frame"))
 }
 
 /// The first rule of lengths and angles that the frame `f` of `normal` breaks, to
@@ -130,17 +118,14 @@ fn frame_fault(f: &Frame, normal: Vec3) -> Option<String> {
 fn measure_fault(f: &Frame, normal: Vec3) -> Option<String> {
     let tolerance = ulps(256.0);
     if !(f.t1.is_finite() && f.t2.is_finite() && f.n.is_finite()) {
-        return Some(say!(
-            "the frame has a NaN or infinite component: a division by a number that is 0 for this normal",
-            "le repère a une composante NaN ou infinie\u{a0}: une division par un nombre nul pour cette normale"
-        ));
+        return Some(say!("generated-s3-the-frame-has-a-nan-or"));
     }
     for (name, t) in [("T1", f.t1), ("T2", f.t2)] {
         if (t.length() - 1.0).abs() > tolerance {
             return Some(say!(
-                "{name} has the length {}: the tangents are unit vectors",
-                "{name} a pour longueur {}\u{a0}: les tangentes sont des vecteurs unitaires",
-                apart(t.length(), 1.0).0
+                "generated-s3-has-the-length-the-tangents-are",
+                length = apart(t.length(), 1.0).0,
+                name = name
             ));
         }
     }
@@ -151,9 +136,9 @@ fn measure_fault(f: &Frame, normal: Vec3) -> Option<String> {
     ] {
         if dot.abs() > tolerance {
             return Some(say!(
-                "{name} = {}: the three axes are at right angles, each product 0",
-                "{name} = {}\u{a0}: les trois axes sont à angle droit, chaque produit nul",
-                n(dot)
+                "generated-s3-the-three-axes-are-at-right",
+                dot = n(dot),
+                name = name
             ));
         }
     }
@@ -165,10 +150,7 @@ fn pole_hint(normal: Vec3) -> String {
     if normal.z > -0.99 {
         return String::new();
     }
-    say!(
-        "; near N = -z, 1 + n_z is 0 or all rounding: the chapter divides by sign + n_z, with sign = copysign(1, n_z), never less than 1 in size",
-        "\u{a0}; près de N = -z, 1 + n_z vaut 0 ou n'est plus qu'arrondi\u{a0}: le chapitre divise par sign + n_z, avec sign = copysign(1, n_z), jamais inférieur à 1 en valeur absolue"
-    )
+    say!("generated-s3-near-n-z-1-n-z")
 }
 
 /// The draws of each generated bounce.
@@ -243,15 +225,14 @@ pub fn indirect_light(yours: impl Fn(&mut Tracer, &Hit, Colour, u32) -> Colour) 
                 return Ok(());
             }
             let case = say!(
-                "the furnace of radius {} around {}, wall albedo {}, the floor at {} with albedo {}, bounces allowed: {}, the mean of {} bounces",
-                "le four de rayon {} centré en {}, d'albédo de paroi {}, le sol en {} d'albédo {}, rebonds permis\u{a0}: {}, la moyenne de {} rebonds",
-                n(radius),
-                v(centre),
-                n(wall),
-                v(floor.point),
-                v(albedo),
-                bounces,
-                BOUNCES_DRAWN
+                "generated-s3-the-furnace-of-radius-around-wall",
+                radius = n(radius),
+                centre = v(centre),
+                wall = n(wall),
+                point = v(floor.point),
+                albedo = v(albedo),
+                bounces = bounces,
+                value = BOUNCES_DRAWN
             );
             let why = bounce_diagnosis(ratio, wall, bounces);
             Err(differs(&case, &v(mean), &v(expected), why))
@@ -263,25 +244,18 @@ pub fn indirect_light(yours: impl Fn(&mut Tracer, &Hit, Colour, u32) -> Colour) 
 /// breaks, in a furnace of wall albedo `wall` with `bounces` allowed.
 fn bounce_diagnosis(ratio: Colour, wall: Real, bounces: u32) -> Option<String> {
     if ratio.max_element() < 0.05 {
-        return Some(say!(
-            "it brought back nothing: the bounce's ray must leave the floor and meet the wall (start it with hit.spawn(direction), which scales its offset with the hit's rounding, whatever the furnace's size)",
-            "il n'a rien rapporté\u{a0}: le rayon du rebond doit quitter le sol et rencontrer la paroi (faites-le partir avec hit.spawn(direction), dont le décalage suit l'arrondi du point, quelle que soit la taille du four)"
-        ));
+        return Some(say!("generated-s3-it-brought-back-nothing-the-bounce"));
     }
     if ratio.max_element() - ratio.min_element() > 0.2 {
         return Some(say!(
-            "the channels are off by different factors {}: each channel of the albedo weights its own channel, albedo * L component by component",
-            "les canaux sont décalés de facteurs différents {}\u{a0}: chaque canal de l'albédo pondère son propre canal, albédo * L composante par composante",
-            v(ratio)
+            "generated-s3-the-channels-are-off-by-different",
+            ratio = v(ratio)
         ));
     }
     let mean = ratio.element_sum() / 3.0;
     let seen = |k: u32| -> Real { (0..k).map(|i| wall.powi(i as i32)).sum() };
     if bounces > 1 && (mean * seen(bounces) / seen(bounces - 1) - 1.0).abs() < 0.05 {
-        return Some(say!(
-            "it is what one bounce fewer brings back: the bounce's ray goes on with the bounces left after this one, bounces - 1",
-            "c'est ce que rapporte un rebond de moins\u{a0}: le rayon du rebond continue avec les rebonds qui restent après celui-ci, bounces - 1"
-        ));
+        return Some(say!("generated-s3-it-is-what-one-bounce-fewer"));
     }
     let hint = crate::s3::weight_hint(mean);
     (!hint.is_empty()).then(|| hint.trim_start_matches(['\u{a0}', ';', ' ']).to_owned())
@@ -297,12 +271,11 @@ pub fn gaussian(yours: impl Fn(Real, Real, Real) -> (Real, Real)) -> Outcome {
             let (x, y) = yours(u1, u2, sigma);
             if !(x.is_finite() && y.is_finite()) {
                 return Err(say!(
-                    "sigma = {}, {}: gave ({}, {}), expected finite numbers (the logarithm of 1 - u1, never of 0)",
-                    "sigma = {}, {}\u{a0}: obtenu ({}\u{a0}; {}), attendu des nombres finis (le logarithme de 1 - u1, jamais de 0)",
-                    n(sigma),
-                    at(u1, u2),
-                    n(x),
-                    n(y)
+                    "generated-s3-sigma-gave-expected-finite-numbers-the",
+                    sigma = n(sigma),
+                    u1_u2 = at(u1, u2),
+                    value = n(x),
+                    y = n(y)
                 ));
             }
         }
@@ -328,10 +301,10 @@ fn gaussian_spread(
     outcome.map_err(|why| {
         let measured = (squares / (2.0 * DRAWS as Real)).sqrt();
         say!(
-            "sigma = {}: {why}; the offsets spread as sigma = {} would (E[x^2 + y^2] = 2 sigma^2): the offset is sigma times a standard normal pair, with the sigma given",
-            "sigma = {}\u{a0}: {why}\u{a0}; les décalages s'étalent comme avec sigma = {} (E[x^2 + y^2] = 2 sigma^2)\u{a0}: le décalage est sigma fois une paire normale centrée réduite, avec le sigma donné",
-            n(sigma),
-            n(measured)
+            "generated-s3-sigma-the-offsets-spread-as-sigma",
+            sigma = n(sigma),
+            measured = n(measured),
+            why = why
         )
     })
 }

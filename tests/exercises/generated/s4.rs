@@ -54,12 +54,11 @@ pub fn cone_sample(yours: impl Fn(&Cone, Real, Real) -> Vec3) -> Outcome {
                 return Ok((ratio, w));
             }
             Err(say!(
-                "the cone of sin^2(theta_max) = {} (1 - cos(theta_max) = {}), {}: gave {}, expected a unit vector of the cone, 1 - z <= 1 - cos(theta_max)",
-                "le cône de sin^2(theta_max) = {} (1 - cos(theta_max) = {}), {}\u{a0}: obtenu {}, attendu un vecteur unitaire du cône, 1 - z <= 1 - cos(theta_max)",
-                n(sin2),
-                n(cone.one_minus_cos_max),
-                at(u1, u2),
-                v(w)
+                "generated-s4-the-cone-of-sin-2-theta",
+                sin2 = n(sin2),
+                cone_one_minus_cos_max = n(cone.one_minus_cos_max),
+                u1_u2 = at(u1, u2),
+                w = v(w)
             ) + &small_cone_hint(&cone))
         };
         for (u1, u2) in end_points() {
@@ -71,9 +70,9 @@ pub fn cone_sample(yours: impl Fn(&Cone, Real, Real) -> Vec3) -> Outcome {
         })
         .map_err(|why| {
             say!(
-                "the cone of sin^2(theta_max) = {}: {why}",
-                "le cône de sin^2(theta_max) = {}\u{a0}: {why}",
-                n(sin2)
+                "generated-s4-the-cone-of-sin-2-theta-2",
+                sin2 = n(sin2),
+                why = why
             ) + &small_cone_hint(&cone)
         })
     })
@@ -85,10 +84,7 @@ fn small_cone_hint(cone: &Cone) -> String {
     if cone.one_minus_cos_max > 1e-3 {
         return String::new();
     }
-    say!(
-        "; for so small a cone, 1 - cos(theta_max) taken from the cosine, and sin(theta) from 1 - cos^2(theta), are lost to rounding: take 1 - cos(theta) = xi1 * one_minus_cos_max and sin^2(theta) = (1 - cos)(1 + cos), as the chapter does",
-        "\u{a0}; pour un cône si petit, 1 - cos(theta_max) tiré du cosinus, et sin(theta) de 1 - cos^2(theta), se perdent dans l'arrondi\u{a0}: prenez 1 - cos(theta) = xi1 * one_minus_cos_max et sin^2(theta) = (1 - cos)(1 + cos), comme le chapitre"
-    )
+    say!("generated-s4-for-so-small-a-cone-1")
 }
 
 /// Cosines to ask a cone's density at: its edge itself and a few roundings either
@@ -123,11 +119,10 @@ pub fn cone_pdf(yours: impl Fn(&Cone, Real) -> Real) -> Outcome {
             return Ok(());
         }
         let case = say!(
-            "the cone of sin^2(theta_max) = {} (cos(theta_max) = {}), cos(theta) = {}",
-            "le cône de sin^2(theta_max) = {} (cos(theta_max) = {}), cos(theta) = {}",
-            n(sin2),
-            n(cone.cos_max),
-            apart(cos, cone.cos_max).0
+            "generated-s4-the-cone-of-sin-2-theta-3",
+            sin2 = n(sin2),
+            cone_cos_max = n(cone.cos_max),
+            cone_cos_max2 = apart(cos, cone.cos_max).0
         );
         let why = pdf_diagnosis(gave, expected, inside, &cone);
         let (gave, expected) = apart(gave, expected);
@@ -138,28 +133,18 @@ pub fn cone_pdf(yours: impl Fn(&Cone, Real) -> Real) -> Outcome {
 /// Which rule of the cone's density `gave` breaks.
 fn pdf_diagnosis(gave: Real, expected: Real, inside: Real, cone: &Cone) -> Option<String> {
     if expected == 0.0 {
-        return Some(say!(
-            "outside the cone, cos(theta) < cos(theta_max), no direction is drawn: the density is 0",
-            "hors du cône, cos(theta) < cos(theta_max), aucune direction n'est tirée\u{a0}: la densité est nulle"
-        ));
+        return Some(say!("generated-s4-outside-the-cone-cos-theta-cos"));
     }
     if gave == 0.0 {
-        return Some(say!(
-            "this direction is inside the cone, cos(theta) >= cos(theta_max): the density is 1 / (2 pi (1 - cos(theta_max)))",
-            "cette direction est dans le cône, cos(theta) >= cos(theta_max)\u{a0}: la densité vaut 1 / (2 pi (1 - cos(theta_max)))"
-        ));
+        return Some(say!("generated-s4-this-direction-is-inside-the-cone"));
     }
     let from_cosine = 1.0 / (2.0 * PI * (1.0 - cone.cos_max));
     if (gave - inside).abs() > (from_cosine - inside).abs() * 0.5 && cone.one_minus_cos_max < 1e-3 {
-        return Some(say!(
-            "1 - cos(theta_max) taken from the cosine is lost to rounding for so small a cone: use the cone's one_minus_cos_max",
-            "1 - cos(theta_max) tiré du cosinus se perd dans l'arrondi pour un cône si petit\u{a0}: utilisez one_minus_cos_max, que le cône garde"
-        ));
+        return Some(say!("generated-s4-1-cos-theta-max-taken-from"));
     }
     Some(say!(
-        "the density is one over the cone's solid angle, 1 / (2 pi (1 - cos(theta_max))) = {}",
-        "la densité est l'inverse de l'angle solide du cône, 1 / (2 pi (1 - cos(theta_max))) = {}",
-        n(inside)
+        "generated-s4-the-density-is-one-over-the",
+        inside = n(inside)
     ))
 }
 
@@ -175,11 +160,10 @@ pub fn disk(yours: impl Fn(Real, Real) -> (Real, Real)) -> Outcome {
                 return Ok((r2, y, x));
             }
             Err(say!(
-                "{} gave ({}, {}): expected a point of the unit disk, x^2 + y^2 <= 1",
-                "{} donne ({}\u{a0}; {}), au lieu d'un point du disque unité, x^2 + y^2 <= 1",
-                at(u1, u2),
-                n(x),
-                n(y)
+                "generated-s4-gave-expected-a-point-of-the",
+                u1_u2 = at(u1, u2),
+                value = n(x),
+                y = n(y)
             ))
         };
         for (u1, u2) in end_points() {
@@ -243,18 +227,15 @@ pub fn thin_lens(
             return Ok(());
         }
         Err(say!(
-            "{}: the mean of |o - start|^2 / aperture^2 over {LENS_DRAWS} rays is {}, expected 1/2: the starts are uniform over the lens's area{}",
-            "{}\u{a0}: la moyenne de |o - start|^2 / aperture^2 sur {LENS_DRAWS} rayons vaut {}, attendu 1/2\u{a0}: les départs sont uniformes sur l'aire de la lentille{}",
-            lens_case(&lens, start, d),
-            n(mean),
-            if (mean - 1.0 / 3.0).abs() < 0.05 {
-                say!(
-                    " (1/3 is the mean of r = xi: it crowds the centre)",
-                    " (1/3 est la moyenne de r = xi\u{a0}: les points se massent au centre)"
-                )
+            "generated-s4-the-mean-of-o-start-2",
+            start_d = lens_case(&lens, start, d),
+            mean = n(mean),
+            of_new = if (mean - 1.0 / 3.0).abs() < 0.05 {
+                say!("generated-s4-1-3-is-the-mean-of")
             } else {
                 String::new()
-            }
+            },
+            LENS_DRAWS = LENS_DRAWS
         ))
     })
 }
@@ -262,12 +243,11 @@ pub fn thin_lens(
 /// The lens and pinhole ray as the book writes them.
 fn lens_case(lens: &ThinLens, start: Vec3, d: Vec3) -> String {
     say!(
-        "the lens of radius {} focused at {}, the pinhole ray from {} along {}",
-        "la lentille de rayon {} mise au point à {}, le rayon du sténopé issu de {} selon {}",
-        n(lens.aperture),
-        n(lens.focus),
-        v(start),
-        v(d)
+        "generated-s4-the-lens-of-radius-focused-at",
+        lens_aperture = n(lens.aperture),
+        lens_focus = n(lens.focus),
+        start = v(start),
+        d = v(d)
     )
 }
 
@@ -285,18 +265,18 @@ fn lens_fault(
     let tolerance = ulps(1024.0) * size;
     let case = lens_case(lens, start, d);
     let shown = say!(
-        "the ray from {} along {}",
-        "le rayon issu de {} selon {}",
-        v(origin),
-        v(direction)
+        "generated-s4-the-ray-from-along",
+        origin = v(origin),
+        direction = v(direction)
     );
     let lateral = (origin - start).truncate().length();
     if !((origin.z - start.z).abs() <= tolerance && lateral <= lens.aperture + tolerance) {
         return Err(say!(
-            "{case}: {shown} starts off the lens: a ray through the lens starts in the eye's plane z = {}, within the aperture {} of the eye (the eye plus aperture times a point of the unit disk)",
-            "{case}\u{a0}: {shown} part hors de la lentille\u{a0}: un rayon à travers la lentille part du plan de l'œil z = {}, à moins de l'ouverture {} de l'œil (l'œil plus l'ouverture fois un point du disque unité)",
-            n(start.z),
-            n(lens.aperture)
+            "generated-s4-starts-off-the-lens-a-ray",
+            start_z = n(start.z),
+            lens_aperture = n(lens.aperture),
+            case = case,
+            shown = shown
         ));
     }
     let along = (focus_point - origin).dot(direction) / direction.length_squared();
@@ -305,11 +285,12 @@ fn lens_fault(
         return Ok(());
     }
     Err(say!(
-        "{case}: {shown} misses the point {} where the pinhole ray meets the focus plane, by {}: {}",
-        "{case}\u{a0}: {shown} manque le point {} où le rayon du sténopé rencontre le plan de mise au point, à {} près\u{a0}: {}",
-        v(focus_point),
-        n(miss),
-        focus_rule(start, d, lens, origin, direction)
+        "generated-s4-misses-the-point-where-the-pinhole",
+        focus_point = v(focus_point),
+        miss = n(miss),
+        origin_direction = focus_rule(start, d, lens, origin, direction),
+        case = case,
+        shown = shown
     ))
 }
 
@@ -320,19 +301,10 @@ fn focus_rule(start: Vec3, d: Vec3, lens: &ThinLens, origin: Vec3, direction: Ve
         (origin + along * direction - p).length() <= 1e-3 * (p - origin).length()
     };
     if passes(start + d.normalize() * lens.focus) {
-        return say!(
-            "the focus plane lies at the distance focus along -z, so the pinhole ray meets it at t = focus / -d_z, not after a length focus along the ray",
-            "le plan de mise au point est à la distance focus selon -z\u{a0}: le rayon du sténopé le rencontre en t = focus / -d_z, et non après une longueur focus le long du rayon"
-        );
+        return say!("generated-s4-the-focus-plane-lies-at-the");
     }
     if passes(d * (lens.focus / -d.z)) {
-        return say!(
-            "the pinhole ray starts at the eye, start, not at the origin",
-            "le rayon du sténopé part de l'œil, start, et non de l'origine"
-        );
+        return say!("generated-s4-the-pinhole-ray-starts-at-the");
     }
-    say!(
-        "every ray through the lens passes through that point, the direction is focus_point - origin",
-        "chaque rayon à travers la lentille passe par ce point\u{a0}: la direction est focus_point - origin"
-    )
+    say!("generated-s4-every-ray-through-the-lens-passes")
 }

@@ -210,14 +210,13 @@ fn degenerate(case: &TriangleCase) -> bool {
 fn triangle_text(case: &TriangleCase) -> String {
     let [a, b, c] = case.corners;
     say!(
-        "the triangle A = {}, B = {}, C = {}, the ray from {} along {}, t_max = {}",
-        "le triangle A = {}, B = {}, C = {}, le rayon issu de {} selon {}, t_max = {}",
-        v(a),
-        v(b),
-        v(c),
-        v(case.ray.origin),
-        v(case.ray.direction),
-        n(case.t_max)
+        "generated-s5-the-triangle-a-b-c-the",
+        a = v(a),
+        b = v(b),
+        c = v(c),
+        ray_origin = v(case.ray.origin),
+        ray_direction = v(case.ray.direction),
+        case_t_max = n(case.t_max)
     )
 }
 
@@ -241,24 +240,14 @@ fn triangle_diagnosis(
     let [a, b, c] = case.corners;
     let det = (b - a).dot(case.ray.direction.cross(c - a));
     match (gave, expected) {
-        (Some(_), None) if degenerate(case) => Some(say!(
-            "det = 0: the ray is parallel to the triangle's plane, or the triangle has no area; the test misses",
-            "det = 0\u{a0}: le rayon est parallèle au plan du triangle, ou le triangle n'a pas d'aire\u{a0}; le test échoue"
-        )),
-        (Some((t, _, _)), None) if t >= case.t_max => Some(say!(
-            "a hit at or beyond t_max is no hit: t < t_max",
-            "une intersection en t_max ou au-delà n'en est pas une\u{a0}: t < t_max"
-        )),
-        (Some(_), None) => Some(say!(
-            "the point is outside the triangle, or behind the ray: a hit needs b_B >= 0, b_C >= 0, b_B + b_C <= 1 and t > 0",
-            "le point est hors du triangle, ou derrière le rayon\u{a0}: une intersection demande b_B >= 0, b_C >= 0, b_B + b_C <= 1 et t > 0"
-        )),
+        (Some(_), None) if degenerate(case) => Some(say!("generated-s5-det-0-the-ray-is-parallel")),
+        (Some((t, _, _)), None) if t >= case.t_max => {
+            Some(say!("generated-s5-a-hit-at-or-beyond-t"))
+        }
+        (Some(_), None) => Some(say!("generated-s5-the-point-is-outside-the-triangle")),
         (None, Some((t, _, _))) => Some(missed_rule(t, det, case)),
         (Some((_, gb, gg)), Some((_, eb, eg))) if (gb - eg).abs() + (gg - eb).abs() < 1e-6 => {
-            Some(say!(
-                "b_B and b_C are exchanged: b_B is the weight of B, along e1 = B - A, and b_C of C, along e2 = C - A",
-                "b_B et b_C sont échangés\u{a0}: b_B est le poids de B, selon e1 = B - A, et b_C celui de C, selon e2 = C - A"
-            ))
+            Some(say!("generated-s5-b-b-and-b-c-are"))
         }
         _ => None,
     }
@@ -270,37 +259,24 @@ fn missed_rule(t: Real, det: Real, case: &TriangleCase) -> String {
     let (beta, gamma) = case.aimed;
     if case.exact && beta.min(gamma).min(1.0 - beta - gamma) == 0.0 {
         return say!(
-            "the point is on the triangle's edge or corner (b_B = {}, b_C = {}): edges belong to the triangle, b_B >= 0, b_C >= 0 and b_B + b_C <= 1, not strict",
-            "le point est sur une arête ou un sommet du triangle (b_B = {}, b_C = {})\u{a0}: les arêtes appartiennent au triangle, b_B >= 0, b_C >= 0 et b_B + b_C <= 1, au sens large",
-            n(beta),
-            n(gamma)
+            "generated-s5-the-point-is-on-the-triangle",
+            beta = n(beta),
+            gamma = n(gamma)
         );
     }
     // Several mistakes can miss the same hit: each that could is named.
     let rules = [
         (
             det < 0.0,
-            say!(
-                "the ray meets the triangle from its back (det = {} < 0): both sides are hit",
-                "le rayon rencontre le triangle par l'arrière (det = {} < 0)\u{a0}: les deux faces sont touchées",
-                n(det)
-            ),
+            say!("generated-s5-the-ray-meets-the-triangle-from", det = n(det)),
         ),
         (
             t < 1e-3,
-            say!(
-                "a hit at t = {}, nearer than a fixed epsilon, is a hit: only t > 0 decides",
-                "une intersection en t = {}, plus proche qu'un epsilon fixe, en est une\u{a0}: seul t > 0 décide",
-                n(t)
-            ),
+            say!("generated-s5-a-hit-at-t-nearer-than", value = n(t)),
         ),
         (
             det.abs() < 1e-3 && case.size < 1e-1,
-            say!(
-                "for a triangle this small det = {} is tiny, not 0: only det = 0 means parallel (a fixed threshold misses small triangles)",
-                "pour un triangle si petit, det = {} est minuscule mais non nul\u{a0}: seul det = 0 signifie parallèle (un seuil fixe manque les petits triangles)",
-                n(det)
-            ),
+            say!("generated-s5-for-a-triangle-this-small-det", det = n(det)),
         ),
     ];
     let named: Vec<String> = rules
@@ -309,12 +285,9 @@ fn missed_rule(t: Real, det: Real, case: &TriangleCase) -> String {
         .map(|(_, why)| why)
         .collect();
     if named.is_empty() {
-        return say!(
-            "the point is inside the triangle (b_B >= 0, b_C >= 0, b_B + b_C <= 1) and in front of the ray before t_max",
-            "le point est dans le triangle (b_B >= 0, b_C >= 0, b_B + b_C <= 1) et devant le rayon, avant t_max"
-        );
+        return say!("generated-s5-the-point-is-inside-the-triangle");
     }
-    named.join(&say!("; or ", "\u{a0}; ou "))
+    named.join(&say!("generated-s5-or"))
 }
 
 /// A generated box and ray: the box, the ray, `t_max`.
@@ -449,13 +422,12 @@ pub fn slab(yours: impl Fn(&Aabb, &Ray, Vec3, Real) -> Option<Real>) -> Outcome 
 /// A box and ray as the book writes them.
 fn slab_text(case: &SlabCase) -> String {
     say!(
-        "the box from {} to {}, the ray from {} along {}, t_max = {}",
-        "la boîte de {} à {}, le rayon issu de {} selon {}, t_max = {}",
-        v(case.bounds.0),
-        v(case.bounds.1),
-        v(case.ray.origin),
-        v(case.ray.direction),
-        n(case.t_max)
+        "generated-s5-the-box-from-to-the-ray",
+        case_bounds = v(case.bounds.0),
+        case_bounds2 = v(case.bounds.1),
+        ray_origin = v(case.ray.origin),
+        ray_direction = v(case.ray.direction),
+        case_t_max = n(case.t_max)
     )
 }
 
@@ -465,22 +437,14 @@ fn slab_diagnosis(case: &SlabCase, gave: Option<Real>, expected: Option<Real>) -
     let flat = (max - min).min_element() == 0.0;
     let inside = case.ray.origin.cmpge(min).all() && case.ray.origin.cmple(max).all();
     match (gave, expected) {
-        (None, Some(_)) if flat => Some(say!(
-            "a flat box (no thickness along an axis, the box of a triangle lying in a plane) is met where near = far: miss only when near > far, and widen the exit by 1 + 2 gamma_3 so that rounding never puts near past far",
-            "une boîte plate (sans épaisseur selon un axe, la boîte d'un triangle couché dans un plan) est touchée là où near = far\u{a0}: ne manquez que si near > far, et élargissez la sortie de 1 + 2 gamma_3 pour que l'arrondi ne place jamais near au-delà de far"
-        )),
-        (Some(t), Some(_)) if inside && t != 0.0 => Some(say!(
-            "from inside the box the ray is in it at once: the entry is 0 (near starts at 0, not at -infinity)",
-            "depuis l'intérieur de la boîte, le rayon y est tout de suite\u{a0}: l'entrée vaut 0 (near part de 0, pas de -l'infini)"
-        )),
-        (Some(t), None) if t >= case.t_max => Some(say!(
-            "an entry at or beyond t_max is no hit: far starts at t_max",
-            "une entrée en t_max ou au-delà n'en est pas une\u{a0}: far part de t_max"
-        )),
-        _ if case.ray.direction.to_array().contains(&0.0) => Some(say!(
-            "a zero component of the direction gives 1 / d = +-infinity, and 0 x infinity = NaN where the ray lies in a face: order the planes by the sign of 1 / d and compare so that NaN leaves the interval as it is",
-            "une composante nulle de la direction donne 1 / d = +-l'infini, et 0 x l'infini = NaN là où le rayon est couché dans une face\u{a0}: ordonnez les plans selon le signe de 1 / d et comparez de sorte qu'un NaN laisse l'intervalle tel quel"
-        )),
+        (None, Some(_)) if flat => Some(say!("generated-s5-a-flat-box-no-thickness-along")),
+        (Some(t), Some(_)) if inside && t != 0.0 => {
+            Some(say!("generated-s5-from-inside-the-box-the-ray"))
+        }
+        (Some(t), None) if t >= case.t_max => Some(say!("generated-s5-an-entry-at-or-beyond-t")),
+        _ if case.ray.direction.to_array().contains(&0.0) => {
+            Some(say!("generated-s5-a-zero-component-of-the-direction"))
+        }
         _ => None,
     }
 }

@@ -68,9 +68,7 @@ fn same_hit(gave: Option<Real>, expected: Option<Real>) -> bool {
 
 /// A nearest distance in the book's notation.
 fn show(t: Option<Real>) -> String {
-    t.map_or(say!("no hit", "aucune intersection"), |t| {
-        format!("t = {}", n(t))
-    })
+    t.map_or(say!("generated-s6-no-hit"), |t| format!("t = {}", n(t)))
 }
 
 /// Exercise s6.1 on generated meshes. A right build may split otherwise than the
@@ -86,7 +84,7 @@ pub fn bvh_build(yours: impl Fn(&Mesh) -> Bvh) -> Outcome {
             let bvh = course_bvh(&yours(&mesh));
             if let Some(fault) = hierarchy::fault(&bvh, &course_mesh) {
                 let case = generated.describe();
-                return Err(say!("{case}: {fault}", "{case}\u{a0}: {fault}"));
+                return Err(say!("generated-s6-message", case = case, fault = fault));
             }
             for aim in aims {
                 course_walk_differs(&bvh, (&generated, &course_mesh), aim)?;
@@ -113,10 +111,10 @@ fn course_walk_differs(
     }
     let case = format!("{}, {}", generated.describe(), describe_shot(shot));
     Err(say!(
-        "{case}: the course's walk through your hierarchy finds {}, testing every triangle {}; each box must hold its triangles",
-        "{case}\u{a0}: le parcours du cours dans votre hiérarchie trouve {}, le test de chaque triangle {}\u{a0}; chaque boîte doit contenir ses triangles",
-        show(gave),
-        show(expected)
+        "generated-s6-the-course-s-walk-through-your",
+        show_gave = show(gave),
+        show_expected = show(expected),
+        case = case
     ))
 }
 
@@ -167,27 +165,13 @@ fn walk_differs(
 /// `expected`; `inside`: the ray starts inside the mesh's box.
 fn walk_rule(gave: Option<Real>, expected: Option<Real>, t_max: Real, inside: bool) -> String {
     match (gave, expected) {
-        (Some(t), _) if t >= t_max => say!(
-            "only hits closer than t_max = {} count, in the leaves' triangles as in the boxes",
-            "seules les intersections plus proches que t_max = {} comptent, dans les triangles des feuilles comme dans les boîtes",
-            n(t_max)
-        ),
-        (Some(t), Some(e)) if t > e => say!(
-            "a nearer hit lies in a box the walk left out: a node is skipped only when the ray enters its box beyond the nearest hit so far, and the walk goes on with the rest of the stack",
-            "une intersection plus proche se trouve dans une boîte que le parcours a laissée de côté\u{a0}: un nœud n'est sauté que si le rayon entre dans sa boîte au-delà de l'intersection la plus proche trouvée, et le parcours continue avec le reste de la pile"
-        ),
-        (None, Some(_)) if inside => say!(
-            "the ray starts inside the mesh's box, which it enters at t = 0: every box it passes through is visited",
-            "le rayon part de l'intérieur de la boîte du maillage, où il entre en t = 0\u{a0}: chaque boîte qu'il traverse est visitée"
-        ),
-        (None, Some(_)) => say!(
-            "the walk missed a hit: every box the ray enters before the nearest hit so far is visited, its children too",
-            "le parcours a manqué une intersection\u{a0}: chaque boîte où le rayon entre avant l'intersection la plus proche trouvée est visitée, ses enfants aussi"
-        ),
-        _ => say!(
-            "the nearest hit is the one testing every triangle finds, closer than t_max",
-            "l'intersection la plus proche est celle que trouve le test de chaque triangle, plus proche que t_max"
-        ),
+        (Some(t), _) if t >= t_max => {
+            say!("generated-s6-only-hits-closer-than-t-max", t_max = n(t_max))
+        }
+        (Some(t), Some(e)) if t > e => say!("generated-s6-a-nearer-hit-lies-in-a"),
+        (None, Some(_)) if inside => say!("generated-s6-the-ray-starts-inside-the-mesh"),
+        (None, Some(_)) => say!("generated-s6-the-walk-missed-a-hit-every"),
+        _ => say!("generated-s6-the-nearest-hit-is-the-one"),
     }
 }
 
@@ -257,38 +241,21 @@ fn shading_rule(
     case: &meshes::Shading,
 ) -> String {
     let Some(corners) = corners else {
-        return say!(
-            "without vertex normals the shading normal is the geometric normal",
-            "sans normales aux sommets la normale d'ombrage est la normale géométrique"
-        );
+        return say!("generated-s6-without-vertex-normals-the-shading-normal");
     };
     let gave = yours(case.weights);
     let unit = gave.normalize_or_zero();
     if blend(corners, case.weights).try_normalize().is_none() {
-        say!(
-            "here b_A N_A + b_B N_B + b_C N_C = 0 (the vertex normals cancel, or are zero), and there is no direction to normalise: the shading normal falls back to the geometric normal",
-            "ici b_A N_A + b_B N_B + b_C N_C = 0 (les normales aux sommets s'annulent, ou sont nulles), et il n'y a aucune direction à normaliser\u{a0}: la normale d'ombrage se rabat sur la normale géométrique"
-        )
+        say!("generated-s6-here-b-a-n-a-b")
     } else if near_vec(gave, -expected, ulps(1024.0)) {
-        say!(
-            "the shading normal is turned to the geometric normal's side: where N_s . N_g < 0, it is -N_s",
-            "la normale d'ombrage est tournée du côté de la normale géométrique\u{a0}: là où N_s . N_g < 0, elle vaut -N_s"
-        )
+        say!("generated-s6-the-shading-normal-is-turned-to")
     } else if (gave.length() - 1.0).abs() > 1e-3
         && (near_vec(unit, expected, 1e-3) || near_vec(unit, -expected, 1e-3))
     {
-        say!(
-            "b_A N_A + b_B N_B + b_C N_C is shorter than 1 wherever the vertex normals differ (here {} long): normalise it",
-            "b_A N_A + b_B N_B + b_C N_C est plus court que 1 partout où les normales aux sommets diffèrent (ici {})\u{a0}: normalisez-le",
-            n(gave.length())
-        )
+        say!("generated-s6-b-a-n-a-b-b", gave_length = n(gave.length()))
     } else {
-        pairing_rules(yours, [all[0], all[1], all[2]], corners, case).unwrap_or_else(|| {
-            say!(
-                "N_s = normalize(b_A N_A + b_B N_B + b_C N_C), turned to the geometric normal's side",
-                "N_s = normalize(b_A N_A + b_B N_B + b_C N_C), tournée du côté de la normale géométrique"
-            )
-        })
+        pairing_rules(yours, [all[0], all[1], all[2]], corners, case)
+            .unwrap_or_else(|| say!("generated-s6-n-s-normalize-b-a-n"))
     }
 }
 
@@ -346,20 +313,19 @@ fn pairing_rules(
     };
     named.dedup();
     let rules: Vec<String> = named.into_iter().map(|p| pairing_rule(p, case)).collect();
-    (!rules.is_empty()).then(|| rules.join(&say!("; or ", "\u{a0}; ou ")))
+    (!rules.is_empty()).then(|| rules.join(&say!("generated-s6-or")))
 }
 
 /// The rule a `pairing` breaks.
 fn pairing_rule(pairing: Pairing, case: &meshes::Shading) -> String {
     let [i, j, k] = case.vertices();
     match pairing {
-        Pairing::Weights => say!(
-            "weight k goes with corner k: b_A N_A + b_B N_B + b_C N_C, with b_B = beta and b_C = gamma",
-            "le poids k va avec le sommet k\u{a0}: b_A N_A + b_B N_B + b_C N_C, avec b_B = beta et b_C = gamma"
-        ),
+        Pairing::Weights => say!("generated-s6-weight-k-goes-with-corner-k"),
         Pairing::Vertices => say!(
-            "corner k's normal is that of the vertex the triangle names: here normals[{i}], normals[{j}], normals[{k}], not normals[0], normals[1], normals[2]",
-            "la normale du sommet k est celle du sommet que nomme le triangle\u{a0}: ici normals[{i}], normals[{j}], normals[{k}], et non normals[0], normals[1], normals[2]"
+            "generated-s6-corner-k-s-normal-is-that",
+            i = i,
+            j = j,
+            k = k
         ),
     }
 }

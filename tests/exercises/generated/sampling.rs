@@ -78,12 +78,12 @@ pub fn describe(radial: &str, k: usize) -> String {
     let (low, high) = azimuths(k % BANDS, BANDS);
     let band = (k / BANDS) as Real / BANDS as Real;
     say!(
-        "{radial} from {} to {}, the azimuth from {} to {} degrees",
-        "{radial} de {} à {}, l'azimut de {} à {} degrés",
-        n(band),
-        n(band + 1.0 / BANDS as Real),
-        n(low),
-        n(high)
+        "generated-sampling-from-to-the-azimuth-from-to",
+        band = n(band),
+        band2 = n(band + 1.0 / BANDS as Real),
+        low = n(low),
+        high = n(high),
+        radial = radial
     )
 }
 
@@ -120,9 +120,13 @@ pub fn spread(
         })
         .unwrap_or(0);
     Err(say!(
-        "{} of {draws} draws fell where the chapter's density puts {PER_CELL}: {}, so the draws are not spread as the density says (chi-square {statistic:.0} over {cells} cells of equal probability, above {limit:.0}, which a right answer passes but once in a million)",
-        "{} des {draws} tirages tombent là où la densité du chapitre en met {PER_CELL}\u{a0}: {}, les tirages ne sont donc pas répartis comme le dit la densité (khi-deux de {statistic:.0} sur {cells} cases de même probabilité, au-dessus de {limit:.0}, ce qu'une bonne réponse ne dépasse qu'une fois sur un million)",
-        counts[worst],
-        describe(worst)
+        "generated-sampling-of-draws-fell-where-the-chapter",
+        counts_worst = counts[worst],
+        describe_worst = describe(worst),
+        draws = draws,
+        PER_CELL = PER_CELL,
+        statistic_written = format!("{:.0}", statistic),
+        cells = cells,
+        limit_written = format!("{:.0}", limit)
     ))
 }

@@ -91,10 +91,10 @@ pub fn check_session(session: u32) -> Outcome {
     for right in right_answers(session) {
         (right.run)().map_err(|why| {
             say!(
-                "the right answer \"{}\" of exercise {} fails its generated check: {why}",
-                "la bonne réponse «\u{a0}{}\u{a0}» de l'exercice {} échoue à sa vérification générée\u{a0}: {why}",
-                right.what,
-                right.exercise
+                "mistakes-common-the-right-answer-of-exercise-fails",
+                right_what = right.what,
+                right_exercise = right.exercise,
+                why = why
             )
         })?;
     }
@@ -108,18 +108,18 @@ pub fn check_session(session: u32) -> Outcome {
         match (mistake.run)() {
             Ok(()) => {
                 return Err(say!(
-                    "the mistake \"{}\" of exercise {} passes its generated check",
-                    "l'erreur «\u{a0}{}\u{a0}» de l'exercice {} passe sa vérification générée",
-                    mistake.what,
-                    mistake.exercise
+                    "mistakes-common-the-mistake-of-exercise-passes-its",
+                    mistake_what = mistake.what,
+                    mistake_exercise = mistake.exercise
                 ));
             }
             Err(why) if !why.contains(words) => {
                 return Err(say!(
-                    "the mistake \"{}\" of exercise {} fails without naming its rule (\"{words}\"): {why}",
-                    "l'erreur «\u{a0}{}\u{a0}» de l'exercice {} échoue sans nommer sa règle («\u{a0}{words}\u{a0}»)\u{a0}: {why}",
-                    mistake.what,
-                    mistake.exercise
+                    "mistakes-common-the-mistake-of-exercise-fails-without",
+                    mistake_what = mistake.what,
+                    mistake_exercise = mistake.exercise,
+                    words = words,
+                    why = why
                 ));
             }
             Err(_) => {}

@@ -26,8 +26,9 @@ fn order_fault(order: &[u32], count: usize) -> Option<String> {
     for &t in order {
         if t as usize >= count {
             return Some(say!(
-                "Bvh::order lists triangle {t}, but the mesh has {count}, numbered from 0",
-                "Bvh::order liste le triangle {t}, mais le maillage en a {count}, numérotés depuis 0"
+                "generated-s6-hierarchy-bvh-order-lists-triangle-but-the",
+                t = t,
+                count = count
             ));
         }
         seen[t as usize] += 1;
@@ -38,13 +39,13 @@ fn order_fault(order: &[u32], count: usize) -> Option<String> {
     );
     match (lacks, twice) {
         (Some(t), _) => Some(say!(
-            "Bvh::order lacks triangle {t}: every triangle is in exactly one leaf",
-            "il manque le triangle {t} dans Bvh::order\u{a0}: chaque triangle est dans exactement une feuille"
+            "generated-s6-hierarchy-bvh-order-lacks-triangle-every-triangle",
+            t = t
         )),
         (_, Some(t)) => Some(say!(
-            "Bvh::order lists triangle {t} {} times: every triangle is in exactly one leaf",
-            "Bvh::order liste {} fois le triangle {t}\u{a0}: chaque triangle est dans exactement une feuille",
-            seen[t]
+            "generated-s6-hierarchy-bvh-order-lists-triangle-times-every",
+            seen = seen[t],
+            t = t
         )),
         _ => None,
     }
@@ -54,8 +55,7 @@ fn order_fault(order: &[u32], count: usize) -> Option<String> {
 fn tree_fault(bvh: &Bvh, mesh: &Mesh) -> Option<String> {
     if bvh.nodes.is_empty() {
         return Some(say!(
-            "the hierarchy has no node: node 0 is the root",
-            "la hiérarchie n'a aucun nœud\u{a0}: le nœud 0 est la racine"
+            "generated-s6-hierarchy-the-hierarchy-has-no-node-node"
         ));
     }
     let mut covered = vec![false; bvh.order.len()];
@@ -63,8 +63,9 @@ fn tree_fault(bvh: &Bvh, mesh: &Mesh) -> Option<String> {
     while let Some((index, depth)) = pending.pop() {
         if depth > DEPTH {
             return Some(say!(
-                "the hierarchy is deeper than {DEPTH} levels at node {index}",
-                "la hiérarchie dépasse {DEPTH} niveaux de profondeur au nœud {index}"
+                "generated-s6-hierarchy-the-hierarchy-is-deeper-than-levels",
+                DEPTH = DEPTH,
+                index = index
             ));
         }
         let node = bvh.nodes[index];
@@ -83,9 +84,9 @@ fn tree_fault(bvh: &Bvh, mesh: &Mesh) -> Option<String> {
     }
     let slot = covered.iter().position(|&c| !c)?;
     Some(say!(
-        "triangle {} (Bvh::order[{slot}]) is in no leaf, so no ray finds it: the leaves' ranges cover the whole of Bvh::order",
-        "le triangle {} (Bvh::order[{slot}]) n'est dans aucune feuille, donc aucun rayon ne le trouve\u{a0}: les plages des feuilles couvrent tout Bvh::order",
-        bvh.order[slot]
+        "generated-s6-hierarchy-triangle-bvh-order-is-in-no",
+        order_slot = bvh.order[slot],
+        slot = slot
     ))
 }
 
@@ -95,10 +96,10 @@ fn leaf_fault(bvh: &Bvh, mesh: &Mesh, index: usize, covered: &mut [bool]) -> Opt
     let range = node.first as usize..node.first as usize + node.count as usize;
     if range.end > covered.len() || covered[range.clone()].contains(&true) {
         return Some(say!(
-            "leaf node {index} covers Bvh::order[{}..{}], which lies past its end or is another leaf's too: every triangle is in exactly one leaf",
-            "la feuille du nœud {index} couvre Bvh::order[{}..{}], qui dépasse sa fin ou appartient aussi à une autre feuille\u{a0}: chaque triangle est dans exactement une feuille",
-            range.start,
-            range.end
+            "generated-s6-hierarchy-leaf-node-covers-bvh-order-which",
+            range_start = range.start,
+            range_end = range.end,
+            index = index
         ));
     }
     covered[range.clone()].fill(true);
@@ -110,10 +111,14 @@ fn leaf_fault(bvh: &Bvh, mesh: &Mesh, index: usize, covered: &mut [bool]) -> Opt
         ) {
             let [a, b, c] = corners.map(v);
             return Some(say!(
-                "the box of leaf node {index}, {} to {}, does not hold its triangle {t}, {a} {b} {c}: a leaf's box is the min and max of its triangles' corners",
-                "la boîte de la feuille du nœud {index}, de {} à {}, ne contient pas son triangle {t}, {a} {b} {c}\u{a0}: la boîte d'une feuille est le min et le max des sommets de ses triangles",
-                v(node.bounds.min),
-                v(node.bounds.max)
+                "generated-s6-hierarchy-the-box-of-leaf-node-to",
+                node_bounds = v(node.bounds.min),
+                node_bounds2 = v(node.bounds.max),
+                index = index,
+                t = t,
+                a = a,
+                b = b,
+                c = c
             ));
         }
     }
@@ -147,18 +152,19 @@ fn split_fault(bvh: &Bvh, mesh: &Mesh, index: usize) -> Option<String> {
     let names = ["x", "y", "z"];
     let across = (0..3).find(|&a| one_side(a)).map_or(String::new(), |a| {
         say!(
-            "; if yours cut it along {}, where they all fall on one side: the box is cut across its longest side, here {}",
-            "\u{a0}; si la vôtre l'a coupée selon {}, où ils tombent tous d'un côté\u{a0}: la boîte est coupée en travers de son plus grand côté, ici {}",
-            names[a],
-            names[axis]
+            "generated-s6-hierarchy-if-yours-cut-it-along-where",
+            names_a = names[a],
+            names_axis = names[axis]
         )
     });
     Some(say!(
-        "leaf node {index} holds {} triangles, its box {} long along {}, its longest side, with centroids on both sides of that side's middle: splitting stops at {LEAF_SIZE} triangles, or when every centroid falls on one side, whatever the box's size{across}",
-        "la feuille du nœud {index} contient {} triangles, sa boîte longue de {} selon {}, son plus grand côté, avec des centroïdes des deux côtés du milieu de ce côté\u{a0}: la division s'arrête à {LEAF_SIZE} triangles, ou quand tous les centroïdes tombent d'un côté, quelle que soit la taille de la boîte{across}",
-        node.count,
-        n((bounds.max - bounds.min)[axis]),
-        names[axis]
+        "generated-s6-hierarchy-leaf-node-holds-triangles-its-box",
+        node_count = node.count,
+        bounds_axis = n((bounds.max - bounds.min)[axis]),
+        names_axis = names[axis],
+        index = index,
+        LEAF_SIZE = LEAF_SIZE,
+        across = across
     ))
 }
 
@@ -168,22 +174,24 @@ fn children_fault(bvh: &Bvh, index: usize) -> Option<String> {
     let first = node.first as usize;
     if first + 1 >= bvh.nodes.len() {
         return Some(say!(
-            "node {index} is an inner node (count = 0) whose children, nodes {first} and {}, lie past the {} nodes",
-            "le nœud {index} est un nœud interne (count = 0) dont les enfants, les nœuds {first} et {}, sont au-delà des {} nœuds",
-            first + 1,
-            bvh.nodes.len()
+            "generated-s6-hierarchy-node-is-an-inner-node-count",
+            first2 = first + 1,
+            bvh_nodes = bvh.nodes.len(),
+            index = index,
+            first = first
         ));
     }
     let child = [first, first + 1]
         .into_iter()
         .find(|&c| !holds(&node.bounds, &bvh.nodes[c].bounds))?;
     Some(say!(
-        "the box of node {child}, {} to {}, sticks out of its parent's, node {index}, {} to {}: each child's box lies inside its parent's",
-        "la boîte du nœud {child}, de {} à {}, dépasse de celle de son parent, le nœud {index}, de {} à {}\u{a0}: la boîte de chaque enfant est dans celle de son parent",
-        v(bvh.nodes[child].bounds.min),
-        v(bvh.nodes[child].bounds.max),
-        v(node.bounds.min),
-        v(node.bounds.max)
+        "generated-s6-hierarchy-the-box-of-node-to-sticks",
+        child_bounds = v(bvh.nodes[child].bounds.min),
+        child_bounds2 = v(bvh.nodes[child].bounds.max),
+        node_bounds = v(node.bounds.min),
+        node_bounds2 = v(node.bounds.max),
+        child = child,
+        index = index
     ))
 }
 

@@ -148,35 +148,23 @@ impl Generated {
     /// place, and the corners of each when there are at most three.
     pub fn describe(&self) -> String {
         let layout = match self.layout {
-            Layout::Scattered => say!("scattered", "dispersés"),
-            Layout::Copies => say!(
-                "copies of one triangle (the same centroid) and a few others",
-                "des copies d'un même triangle (le même centroïde) et quelques autres"
-            ),
-            Layout::Flat => say!(
-                "all in the plane x = {}",
-                "tous dans le plan x = {}",
-                n(self.at.x)
-            ),
-            Layout::Degenerate => say!(
-                "some degenerate (two corners the same, or three in a line)",
-                "dont certains dégénérés (deux sommets confondus, ou trois alignés)"
-            ),
+            Layout::Scattered => say!("generated-s6-meshes-scattered"),
+            Layout::Copies => say!("generated-s6-meshes-copies-of-one-triangle-the-same"),
+            Layout::Flat => say!("generated-s6-meshes-all-in-the-plane-x", at = n(self.at.x)),
+            Layout::Degenerate => say!("generated-s6-meshes-some-degenerate-two-corners-the-same"),
         };
         let count = self.triangles.len();
         let mut text = say!(
-            "a mesh of {count} triangles, {layout}, of size {} around {}",
-            "un maillage de {count} triangles, {layout}, de taille {} autour de {}",
-            n(self.size),
-            v(self.at)
+            "generated-s6-meshes-a-mesh-of-triangles-of-size",
+            size = n(self.size),
+            at = v(self.at),
+            count = count,
+            layout = layout
         );
         if count <= 3 {
             for (t, corners) in self.triangles.iter().enumerate() {
                 let [a, b, c] = corners.map(|p| v(self.at + self.size * p));
-                text += &say!(
-                    ", triangle {t}: {a} {b} {c}",
-                    ", triangle {t}\u{a0}: {a} {b} {c}"
-                );
+                text += &say!("generated-s6-meshes-triangle", t = t, a = a, b = b, c = c);
             }
         }
         text
@@ -267,10 +255,10 @@ pub fn describe_shot((origin, direction, t_max): Shot) -> String {
         String::new()
     };
     say!(
-        "the ray from {} along {}{reach}",
-        "le rayon issu de {} selon {}{reach}",
-        v(origin),
-        v(direction)
+        "generated-s6-meshes-the-ray-from-along",
+        origin = v(origin),
+        direction = v(direction),
+        reach = reach
     )
 }
 
@@ -393,22 +381,28 @@ impl Shading {
     pub fn describe(&self) -> String {
         let [i, j, k] = self.vertices();
         let normals = if self.normals.is_empty() {
-            say!("no vertex normals", "aucune normale aux sommets")
+            say!("generated-s6-meshes-no-vertex-normals")
         } else {
             let listed: Vec<String> = self.normals.iter().map(|&n| v(n)).collect();
             say!(
-                "the vertex normals {} as the file gives them",
-                "les normales aux sommets {} telles que le fichier les donne",
-                listed.join(" ")
+                "generated-s6-meshes-the-vertex-normals-as-the-file",
+                listed = listed.join(" ")
             )
         };
         let [a, b, c] = self.weights.map(n);
         let s = separator();
         say!(
-            "triangle {} of the vertices ({i}{s}{j}{s}{k}), {normals}, the weights (b_A, b_B, b_C) = ({a}{s}{b}{s}{c}), the geometric normal {}",
-            "le triangle {} des sommets ({i}{s}{j}{s}{k}), {normals}, les poids (b_A{s}b_B{s}b_C) = ({a}{s}{b}{s}{c}), la normale géométrique {}",
-            self.triangle,
-            v(self.geometric())
+            "generated-s6-meshes-triangle-of-the-vertices-the-weights",
+            triangle = self.triangle,
+            geometric = v(self.geometric()),
+            i = i,
+            s = s,
+            j = j,
+            k = k,
+            normals = normals,
+            a = a,
+            b = b,
+            c = c
         )
     }
 }

@@ -162,31 +162,26 @@ impl Camera {
     /// The camera in the book's notation.
     fn describe(&self) -> String {
         say!(
-            "the camera at {} looking at {}, up {}, plunge {} degrees",
-            "la caméra en {} regardant {}, up {}, plongée de {} degrés",
-            v(self.eye),
-            v(self.target),
-            v(self.up),
-            n(self.plunge)
+            "generated-s7-camera-the-camera-at-looking-at-up",
+            eye = v(self.eye),
+            target = v(self.target),
+            up = v(self.up),
+            plunge = n(self.plunge)
         )
     }
 }
 
 /// A camera's frame in the book's notation.
 fn show_frame(frame: Option<Frame>) -> String {
-    frame.map_or(
-        say!("no frame", "aucune orientation"),
-        |(eye, [r, u, b])| {
-            say!(
-                "the eye at {}, right {}, up' {}, back {}",
-                "l'œil en {}, right {}, up' {}, back {}",
-                v(eye),
-                v(r),
-                v(u),
-                v(b)
-            )
-        },
-    )
+    frame.map_or(say!("generated-s7-camera-no-frame"), |(eye, [r, u, b])| {
+        say!(
+            "generated-s7-camera-the-eye-at-right-up-back",
+            eye = v(eye),
+            r = v(r),
+            u = v(u),
+            b = v(b)
+        )
+    })
 }
 
 /// Exercise s7.2 on generated cameras (see [`cameras`]): the eye and the frame
@@ -237,28 +232,20 @@ fn aim_rule(
     let [right, _, back] = g.1;
     if close(course_aim(at_origin, camera.plunge)) {
         say!(
-            "the camera looks at the target, here {}, not at the origin: forward = normalize(target - eye)",
-            "la caméra regarde la cible, ici {}, et non l'origine\u{a0}: forward = normalize(target - eye)",
-            v(camera.target)
+            "generated-s7-camera-the-camera-looks-at-the-target",
+            camera_target = v(camera.target)
         )
     } else if close(course_aim(camera, camera.plunge.to_degrees())) {
-        say!(
-            "the plunge is in degrees: turn it into radians, psi pi / 180, for the rotation",
-            "la plongée est en degrés\u{a0}: convertissez-la en radians, psi pi / 180, pour la rotation"
-        )
+        say!("generated-s7-camera-the-plunge-is-in-degrees-turn")
     } else if ((g.0 - camera.target).length() - offset.length()).abs() > tolerance * offset.length()
     {
         say!(
-            "the eye turns around the target and keeps its distance to it, {}; yours is {} from it",
-            "l'œil tourne autour de la cible et reste à la même distance d'elle, {}\u{a0}; le vôtre en est à {}",
-            n(offset.length()),
-            n((g.0 - camera.target).length())
+            "generated-s7-camera-the-eye-turns-around-the-target",
+            offset_length = n(offset.length()),
+            target_length = n((g.0 - camera.target).length())
         )
     } else if (g.0 - e.0).length() > tolerance * offset.length() {
-        say!(
-            "the eye rises around the target: target + q (eye - target), q the rotation by the plunge about normalize((eye - target) x up)",
-            "l'œil s'élève autour de la cible\u{a0}: target + q (eye - target), q la rotation de la plongée autour de normalize((eye - target) x up)"
-        )
+        say!("generated-s7-camera-the-eye-rises-around-the-target")
     } else {
         frame_rule(right, back, e.1, camera.up)
     }
@@ -268,27 +255,17 @@ fn aim_rule(
 fn frame_rule(right: Vec3, back: Vec3, expected: [Vec3; 3], up: Vec3) -> String {
     let flipped = |a: Vec3, b: Vec3| (a + b).length() <= 1e-3;
     if flipped(right, expected[0]) {
-        say!(
-            "right = forward x up, not up x forward, which mirrors the image",
-            "right = forward x up, et non up x forward, qui renverse l'image en miroir"
-        )
+        say!("generated-s7-camera-right-forward-x-up-not-up")
     } else if (right.length() - 1.0).abs() > 1e-3 {
         say!(
-            "right = normalize(forward x up): forward x up is a unit vector only when up is one and perpendicular to the view; here up is {} long and forward x up {} long",
-            "right = normalize(forward x up)\u{a0}: forward x up n'est unitaire que si up l'est et est perpendiculaire à la vue\u{a0}; ici up mesure {} et forward x up {}",
-            n(up.length()),
-            n(right.length())
+            "generated-s7-camera-right-normalize-forward-x-up-forward",
+            up_length = n(up.length()),
+            right_length = n(right.length())
         )
     } else if flipped(back, expected[2]) {
-        say!(
-            "back = -forward: camera-space z points from the scene towards the eye",
-            "back = -forward\u{a0}: le z de la caméra pointe de la scène vers l'œil"
-        )
+        say!("generated-s7-camera-back-forward-camera-space-z-points")
     } else {
-        say!(
-            "forward = normalize(target - eye), right = normalize(forward x up), up' = right x forward, back = -forward",
-            "forward = normalize(target - eye), right = normalize(forward x up), up' = right x forward, back = -forward"
-        )
+        say!("generated-s7-camera-forward-normalize-target-eye-right-normalize")
     }
 }
 
@@ -296,15 +273,11 @@ fn frame_rule(right: Vec3, back: Vec3, expected: [Vec3; 3], up: Vec3) -> String 
 /// frame, `offset` the eye's from the target.
 fn along_rule(framed: bool, offset: Vec3, up: Vec3) -> String {
     if framed {
-        return say!(
-            "the camera looks exactly along up: forward x up = 0 gives no right-hand direction, and aim gives None",
-            "la caméra regarde exactement le long de up\u{a0}: forward x up = 0 ne donne aucune direction vers la droite, et aim donne None"
-        );
+        return say!("generated-s7-camera-the-camera-looks-exactly-along-up");
     }
     let angle = offset.cross(up).length().atan2(-offset.dot(up));
     say!(
-        "the view is {} radians from up: only a camera looking exactly along up has no frame, and right = normalize(forward x up) for any length of forward x up",
-        "la vue est à {} radians de up\u{a0}: seule une caméra regardant exactement le long de up n'a pas d'orientation, et right = normalize(forward x up) quelle que soit la longueur de forward x up",
-        n(angle)
+        "generated-s7-camera-the-view-is-radians-from-up",
+        angle = n(angle)
     )
 }

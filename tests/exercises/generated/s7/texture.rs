@@ -165,14 +165,20 @@ fn describe_texture(texture: &Texture, [u, v]: [Real; 2]) -> String {
     let (w, h, s) = (texture.width, texture.height, separator());
     let (u, v) = (n(u), n(v));
     let filter = texture.filter;
-    let lecture = match filter {
-        Filter::Nearest => "au plus proche",
-        Filter::Bilinear => "bilinéaire",
+    let lookup = match filter {
+        Filter::Nearest => say!("checklist-filter-nearest"),
+        Filter::Bilinear => say!("checklist-filter-bilinear"),
     };
     say!(
-        "a {w} x {h} texture, rows from the top: {}, {filter:?} lookup at (u, v) = ({u}, {v})",
-        "une texture de {w} x {h}, lignes depuis le haut\u{a0}: {}, lecture {lecture} ({filter:?}) en (u{s}v) = ({u}{s}{v})",
-        rows.join(" / ")
+        "generated-s7-texture-a-x-texture-rows-from-the",
+        rows = rows.join(" / "),
+        w = w,
+        h = h,
+        filter_debug = format!("{:?}", filter),
+        u = u,
+        v = v,
+        lookup = lookup,
+        s = s
     )
 }
 
@@ -193,22 +199,14 @@ impl Rule {
     /// The rule of the chapter that this mistake breaks, for a `w` x `h` texture.
     fn why(self, w: u32, h: u32) -> String {
         match self {
-            Rule::FromBottom => say!(
-                "v runs from the bottom (v = 0) to the top (v = 1) while rows count from the top: y = (1 - v) H, not v H",
-                "v va du bas (v = 0) vers le haut (v = 1) tandis que les lignes se comptent depuis le haut\u{a0}: y = (1 - v) H, et non v H"
-            ),
+            Rule::FromBottom => say!("generated-s7-texture-v-runs-from-the-bottom-v"),
             Rule::Swapped => say!(
-                "u runs along the width and v along the height, x = u W and y = (1 - v) H with W = {w} and H = {h}: yours swaps u and v, or W and H, which only a texture that is not square shows",
-                "u court selon la largeur et v selon la hauteur, x = u W et y = (1 - v) H avec W = {w} et H = {h}\u{a0}: le vôtre échange u et v, ou W et H, ce que seule une texture non carrée montre"
+                "generated-s7-texture-u-runs-along-the-width-and",
+                w = w,
+                h = h
             ),
-            Rule::Truncated => say!(
-                "a point's texel is floor(x), towards minus infinity: floor(-0.5) = -1, where a cast to an integer truncates towards zero, to 0",
-                "le texel d'un point est floor(x), vers moins l'infini\u{a0}: floor(-0,5) = -1, là où une conversion en entier tronque vers zéro, à 0"
-            ),
-            Rule::Unshifted => say!(
-                "texel k's centre is at k + 1/2: the bilinear filter shifts the point by half a texel, x' = x - 1/2 and y' = y - 1/2, before splitting it",
-                "le centre du texel k est en k + 1/2\u{a0}: le filtre bilinéaire décale le point d'un demi-texel, x' = x - 1/2 et y' = y - 1/2, avant de le découper"
-            ),
+            Rule::Truncated => say!("generated-s7-texture-a-point-s-texel-is-floor"),
+            Rule::Unshifted => say!("generated-s7-texture-texel-k-s-centre-is-at"),
         }
     }
 }
@@ -291,5 +289,5 @@ fn texture_rules(
         .iter()
         .map(|r| r.why(texture.width, texture.height))
         .collect();
-    (!named.is_empty()).then(|| named.join(&say!("; or ", "\u{a0}; ou ")))
+    (!named.is_empty()).then(|| named.join(&say!("generated-s7-texture-or")))
 }
