@@ -13,6 +13,6 @@
 
 pub mod catalogue;
 pub mod language;
-mod numbers;
+pub mod numbers;
 
 pub use catalogue::{Argument, say};

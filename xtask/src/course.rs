@@ -15,13 +15,14 @@ use crate::view::{copy, copy_folder};
 pub const FOLDER: &str = "tests/course";
 
 /// Copies the view at `view` (before its exercises are stubbed) into
-/// `view/tests/course`, as the library `course`: its sources, build script and
-/// scene files (the build script lists the stages from them), with a manifest of
-/// its own.
+/// `view/tests/course`, as the library `course`: its sources, build script, scene
+/// files (the build script lists the stages from them) and message catalogue (its
+/// sources read it in), with a manifest of its own.
 pub fn write_course(view: &Path) -> Result<(), String> {
     let out = view.join(FOLDER);
     copy_folder(&view.join("src"), &out.join("src"))?;
     copy_folder(&view.join("sessions"), &out.join("sessions"))?;
+    copy_folder(&view.join("messages"), &out.join("messages"))?;
     copy(&view.join("build.rs"), &out.join("build.rs"))?;
     let text = fs::read_to_string(view.join("Cargo.toml")).map_err(|e| e.to_string())?;
     fs::write(out.join("Cargo.toml"), course_manifest(&text)?).map_err(|e| e.to_string())?;
