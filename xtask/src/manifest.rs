@@ -6,8 +6,8 @@ use crate::cfg::session_of;
 
 /// `Cargo.toml` text as it stands after `session`: its version marked with the
 /// session (`0.1.0-s3`, so that views built side by side stay apart); no features
-/// `s1`..`s7` and no
-/// default features; dependencies that a session brings (`dep:tobj`) plain when
+/// `s1`..`s7`, no `cli` (a view always has its command line: the feature's
+/// dependencies plain, no target requiring it) and no default features; dependencies that a session brings (`dep:tobj`) plain when
 /// the view has that session, absent otherwise (those beyond the course always); a workspace of its own (an empty
 /// `[workspace]` table, so that the view builds wherever it is written, even
 /// inside this repository's `target/`).
@@ -41,6 +41,22 @@ pub fn view_manifest(text: &str, session: u32) -> Result<String, String> {
             }
             features.remove(&name);
         }
+        let cli: Vec<String> = features
+            .remove(CLI)
+            .as_ref()
+            .and_then(Item::as_array)
+            .map(|a| {
+                a.iter()
+                    .filter_map(Value::as_str)
+                    .map(str::to_owned)
+                    .collect()
+            })
+            .unwrap_or_default();
+        brought.extend(
+            cli.iter()
+                .filter_map(|d| d.strip_prefix("dep:"))
+                .map(|d| (d.to_owned(), 0)),
+        );
         features.remove("default");
         features.decor_mut().set_prefix("\n");
     }
@@ -56,8 +72,18 @@ pub fn view_manifest(text: &str, session: u32) -> Result<String, String> {
             }
         }
     }
+    for targets in ["bin", "test"] {
+        if let Some(tables) = doc.get_mut(targets).and_then(Item::as_array_of_tables_mut) {
+            for table in tables.iter_mut() {
+                table.remove("required-features");
+            }
+        }
+    }
     Ok(doc.to_string())
 }
+
+/// The feature of the command line, which every view holds.
+const CLI: &str = "cli";
 
 #[cfg(test)]
 mod tests {
@@ -78,10 +104,17 @@ s7 = ["s5"]
 beyond = ["s7", "dep:wide"]
 f32 = []
 
+cli = ["dep:clap"]
+
 [dependencies]
+clap = { version = "4", optional = true }
 glam = "0.30"
 tobj = { version = "4", optional = true }
 wide = { version = "1", optional = true }
+
+[[bin]]
+name = "raycourse"
+required-features = ["cli"]
 "#;
 
     #[test]
@@ -101,6 +134,17 @@ wide = { version = "1", optional = true }
         let doc: toml_edit::DocumentMut = text.parse().unwrap();
         let tobj = doc["dependencies"]["tobj"].as_inline_table().unwrap();
         assert!(tobj.get("optional").is_none());
+    }
+
+    #[test]
+    fn a_view_always_has_its_command_line() {
+        let text = view_manifest(MANIFEST, 1).unwrap();
+        let doc: toml_edit::DocumentMut = text.parse().unwrap();
+        assert!(doc["features"].get("cli").is_none(), "{text}");
+        let clap = doc["dependencies"]["clap"].as_inline_table().unwrap();
+        assert!(clap.get("optional").is_none(), "{text}");
+        let bin = &doc["bin"].as_array_of_tables().unwrap().get(0).unwrap();
+        assert!(bin.get("required-features").is_none(), "{text}");
     }
 
     #[test]
