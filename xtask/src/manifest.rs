@@ -21,9 +21,17 @@ pub fn view_manifest(text: &str, session: u32) -> Result<String, String> {
     doc["package"]["version"] = toml_edit::value(format!("{version}-s{session}"));
     let mut brought = vec![];
     if let Some(features) = doc.get_mut("features").and_then(Item::as_table_mut) {
+        // The command line's feature goes as a session every view holds would.
         let named: Vec<(u32, String)> = features
             .iter()
-            .filter_map(|(name, _)| session_of(name).map(|n| (n, name.to_owned())))
+            .filter_map(|(name, _)| {
+                let session = if name == CLI {
+                    Some(0)
+                } else {
+                    session_of(name)
+                };
+                session.map(|n| (n, name.to_owned()))
+            })
             .collect();
         for (n, name) in named {
             let deps: Vec<String> = features
@@ -41,22 +49,6 @@ pub fn view_manifest(text: &str, session: u32) -> Result<String, String> {
             }
             features.remove(&name);
         }
-        let cli: Vec<String> = features
-            .remove(CLI)
-            .as_ref()
-            .and_then(Item::as_array)
-            .map(|a| {
-                a.iter()
-                    .filter_map(Value::as_str)
-                    .map(str::to_owned)
-                    .collect()
-            })
-            .unwrap_or_default();
-        brought.extend(
-            cli.iter()
-                .filter_map(|d| d.strip_prefix("dep:"))
-                .map(|d| (d.to_owned(), 0)),
-        );
         features.remove("default");
         features.decor_mut().set_prefix("\n");
     }
