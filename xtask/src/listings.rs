@@ -11,7 +11,8 @@
 //! `{{#exercises sN}}` becomes the table of session N's exercises, read from their
 //! markers in the view's code (see [`crate::exercise`]) and their checklist lines
 //! from `tests/exercises/sN.rs`; the French edition names each exercise with the
-//! French title its checklist entry gives `cargo test -- --lang fr`.
+//! French title the checklist's catalogue gives it (`exercise-sN-K` of
+//! `messages/fr/checklist.ftl`, as `cargo test -- --lang fr` says it).
 //! `{{#timings FILE}}` becomes the table `raycourse bench` printed into
 //! `book/src/FILE`, in French in the French edition ([`crate::timings`]), and the
 //! entries between `{{#sorted}}` and `{{#sorted-end}}` are put in the order of their
@@ -276,8 +277,8 @@ fn exercise_table(n: u32, views: &Path, words: &Words) -> Result<String, String>
             .map(|l| l.trim_end_matches("\",").to_owned())
             .ok_or_else(|| format!("exercise {id} has no line in tests/exercises/s{n}.rs"))?;
         let title = if words.french_titles {
-            french_title(&checks, &line).ok_or_else(|| {
-                format!("exercise {id} has no French title in tests/exercises/s{n}.rs")
+            french_title(&view, &id).ok_or_else(|| {
+                format!("exercise {id} has no French title in messages/fr/checklist.ftl")
             })?
         } else {
             group[0].0.title.clone()
@@ -292,15 +293,24 @@ fn exercise_table(n: u32, views: &Path, words: &Words) -> Result<String, String>
     Ok(table)
 }
 
-/// The French title of the exercise whose checklist line is `line`: the first string
-/// of the `french: [title, section]` that follows its `name` in the checklist
-/// `checks`, its `\u{a0}` escapes made non-breaking spaces.
-fn french_title(checks: &str, line: &str) -> Option<String> {
-    let after_name = &checks[checks.find(&format!("name: \"{line}\""))?..];
-    let after_french = &after_name[after_name.find("french: [")?..];
-    let start = after_french.find('"')? + 1;
-    let end = start + after_french[start..].find('"')?;
-    Some(after_french[start..end].replace("\\u{a0}", "\u{a0}"))
+/// The French title of exercise `id` (`s1.2`), as the checklist's catalogue in the
+/// view gives it (`exercise-s1-2` of `messages/fr/checklist.ftl`).
+fn french_title(view: &Path, id: &str) -> Option<String> {
+    use fluent_syntax::ast::{Entry, PatternElement};
+    let text = std::fs::read_to_string(view.join("messages/fr/checklist.ftl")).ok()?;
+    let resource = fluent_syntax::parser::parse(text.as_str()).ok()?;
+    let wanted = format!("exercise-{}", id.replace('.', "-"));
+    resource.body.iter().find_map(|entry| match entry {
+        Entry::Message(m) if m.id.name == wanted => {
+            let elements = &m.value.as_ref()?.elements;
+            let texts = elements.iter().map(|e| match e {
+                PatternElement::TextElement { value } => Some(*value),
+                PatternElement::Placeable { .. } => None,
+            });
+            texts.collect::<Option<String>>()
+        }
+        _ => None,
+    })
 }
 
 /// The listing of `sN FILE ANCHOR`: caption, then the code.
@@ -427,29 +437,19 @@ fn mark_gained(before: &str, after: &str) -> String {
 mod tests {
     use super::{captioned, french_title, mark_gained};
 
-    /// The title is the first string of the `french` entry after the exercise's
-    /// own name, not a neighbour's, on one line or two, its escapes unescaped.
+    /// The title is the exercise's own message of the French catalogue, not a
+    /// neighbour's nor its section.
     #[test]
     fn an_exercise_is_named_by_its_own_french_title() {
-        let checks = r#"
-            name: "s1_1_first",
-            french: ["le premier", "séance 1, «\u{a0}Un\u{a0}»"],
-            name: "s1_2_second",
-            needs: &["s1.1"],
-            french: [
-                "le\u{a0}second",
-                "séance 1",
-            ],
-        "#;
-        assert_eq!(
-            french_title(checks, "s1_1_first").as_deref(),
-            Some("le premier")
-        );
-        assert_eq!(
-            french_title(checks, "s1_2_second").as_deref(),
-            Some("le\u{a0}second")
-        );
-        assert_eq!(french_title(checks, "s1_3_third"), None);
+        let view = tempfile::tempdir().unwrap();
+        std::fs::create_dir_all(view.path().join("messages/fr")).unwrap();
+        let catalogue = "exercise-s1-1 = le premier\n    .section = livre, séance 1\n\
+                         exercise-s1-2 = le\u{a0}second\n    .section = livre\n";
+        std::fs::write(view.path().join("messages/fr/checklist.ftl"), catalogue).unwrap();
+        let title = |id| french_title(view.path(), id);
+        assert_eq!(title("s1.1").as_deref(), Some("le premier"));
+        assert_eq!(title("s1.2").as_deref(), Some("le\u{a0}second"));
+        assert_eq!(title("s1.3"), None);
     }
 
     #[test]

@@ -72,8 +72,8 @@ pub fn write_exercises(root: &Path, choice: &Choice, out: &Path) -> Result<Vec<M
     Ok(stubbed)
 }
 
-/// The manifest with the library's and the binary's own tests off (only the
-/// checklist runs), the course's answers as a dev-dependency, marked as an exercise crate for the build script
+/// The manifest with the library's and the binary's own tests off and the suite's
+/// target gone (only the checklist runs), the course's answers as a dev-dependency, marked as an exercise crate for the build script
 /// (`[package.metadata.raycourse] exercises = true`).
 fn exercise_manifest(text: &str) -> Result<String, String> {
     let mut doc: DocumentMut = text.parse().map_err(|e| format!("Cargo.toml: {e}"))?;
@@ -88,6 +88,13 @@ fn exercise_manifest(text: &str) -> Result<String, String> {
     let mut bins = toml_edit::ArrayOfTables::new();
     bins.push(bin);
     doc["bin"] = toml_edit::Item::ArrayOfTables(bins);
+    // The suite's folder is left out of an exercise crate, and its target with it.
+    if let Some(tests) = doc
+        .get_mut("test")
+        .and_then(toml_edit::Item::as_array_of_tables_mut)
+    {
+        tests.retain(|t| t.get("name").and_then(toml_edit::Item::as_str) != Some("suite"));
+    }
     let mut marked = toml_edit::Table::new();
     marked["exercises"] = toml_edit::value(true);
     let mut metadata = toml_edit::Table::new();
