@@ -27,7 +27,7 @@ generated-common-yours-gave-the-course-s-gives = { $case }: yours gave { $gave }
 
 ## generated-s1
 
-generated-s1-w-h-alpha-degrees-pixel-row = W = { $w }, H = { $h }, alpha = { $value } degrees, pixel (row { $row }, column { $column })
+generated-s1-w-h-alpha-degrees-pixel-row = W = { $w }, H = { $h }, alpha = { $value }°, pixel (row { $row }, column { $column })
 generated-s1-h-2-tan-alpha-would-change = {" "}(H / (2 tan alpha) would change sign past 90 degrees)
 generated-s1-the-camera-looks-down-z-the = the camera looks down -z: the image plane is at z = -H / (2 tan(alpha/2)){ $wide }
 generated-s1-message = ;{" "}
@@ -213,7 +213,7 @@ generated-s6-meshes-triangle-of-the-vertices-the-weights = triangle { $triangle 
 
 ## generated-s7-camera
 
-generated-s7-camera-the-camera-at-looking-at-up = the camera at { $eye } looking at { $target }, up { $up }, plunge { $plunge } degrees
+generated-s7-camera-the-camera-at-looking-at-up = the camera at { $eye } looking at { $target }, up { $up }, plunge { $plunge }°
 generated-s7-camera-no-frame = no frame
 generated-s7-camera-the-eye-at-right-up-back = the eye at { $eye }, right { $r }, up' { $u }, back { $b }
 generated-s7-camera-the-camera-looks-at-the-target = the camera looks at the target, here { $camera_target }, not at the origin: forward = normalize(target - eye)
@@ -238,7 +238,7 @@ generated-s7-texture-or = ; or{" "}
 
 ## generated-sampling
 
-generated-sampling-from-to-the-azimuth-from-to = { $radial } from { $band } to { $band2 }, the azimuth from { $low } to { $high } degrees
+generated-sampling-from-to-the-azimuth-from-to = { $radial } from { $band } to { $band2 }, the azimuth from { $low }° to { $high }°
 generated-sampling-of-draws-fell-where-the-chapter = { $counts_worst } of { $draws } draws fell where the chapter's density puts { $PER_CELL }: { $describe_worst }, so the draws are not spread as the density says (chi-square { $statistic_written } over { $cells } cells of equal probability, above { $limit_written }, which a right answer passes but once in a million)
 
 ## images
@@ -381,7 +381,7 @@ s6-a-triangle-without-vertex-normals = a triangle without vertex normals
 ## s7
 
 s7-a-2-x-2-texture-red = a 2 x 2 texture (red, green / blue, white), { $lookup } lookup ({ $filter_debug }) at (u{ $s }v) = ({ $u }{ $s }{ $v }), { $what }
-s7-the-camera-at-looking-at-the = the camera at { $vec_eye } looking at the origin, up { $vec }, plunge { $plunge } degrees
+s7-the-camera-at-looking-at-the = the camera at { $vec_eye } looking at the origin, up { $vec }, plunge { $plunge }°
 s7-gave-no-aimed-orientation = { $what }: gave no aimed orientation
 s7-the-eye = { $what }: the eye
 s7-right-forward-x-up-normalised-the = { $what }: right = forward x up, normalised (the cross product's order gives its sign)

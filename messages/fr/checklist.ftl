@@ -27,7 +27,7 @@ generated-common-yours-gave-the-course-s-gives = { $case } : le vôtre a obtenu
 
 ## generated-s1
 
-generated-s1-w-h-alpha-degrees-pixel-row = W = { $w }, H = { $h }, alpha = { $value } degrés, pixel (ligne { $row }, colonne { $column })
+generated-s1-w-h-alpha-degrees-pixel-row = W = { $w }, H = { $h }, alpha = { $value }°, pixel (ligne { $row }, colonne { $column })
 generated-s1-h-2-tan-alpha-would-change = {" "}(H / (2 tan alpha) changerait de signe au-delà de 90 degrés)
 generated-s1-the-camera-looks-down-z-the = la caméra regarde selon -z : le plan image est en z = -H / (2 tan(alpha/2)){ $wide }
 generated-s1-message =  ;{" "}
@@ -213,7 +213,7 @@ generated-s6-meshes-triangle-of-the-vertices-the-weights = le triangle { $triang
 
 ## generated-s7-camera
 
-generated-s7-camera-the-camera-at-looking-at-up = la caméra en { $eye } regardant { $target }, up { $up }, plongée de { $plunge } degrés
+generated-s7-camera-the-camera-at-looking-at-up = la caméra en { $eye } regardant { $target }, up { $up }, plongée de { $plunge }°
 generated-s7-camera-no-frame = aucune orientation
 generated-s7-camera-the-eye-at-right-up-back = l'œil en { $eye }, right { $r }, up' { $u }, back { $b }
 generated-s7-camera-the-camera-looks-at-the-target = la caméra regarde la cible, ici { $camera_target }, et non l'origine : forward = normalize(target - eye)
@@ -238,7 +238,7 @@ generated-s7-texture-or =  ; ou{" "}
 
 ## generated-sampling
 
-generated-sampling-from-to-the-azimuth-from-to = { $radial } de { $band } à { $band2 }, l'azimut de { $low } à { $high } degrés
+generated-sampling-from-to-the-azimuth-from-to = { $radial } de { $band } à { $band2 }, l'azimut de { $low }° à { $high }°
 generated-sampling-of-draws-fell-where-the-chapter = { $counts_worst } des { $draws } tirages tombent là où la densité du chapitre en met { $PER_CELL } : { $describe_worst }, les tirages ne sont donc pas répartis comme le dit la densité (khi-deux de { $statistic_written } sur { $cells } cases de même probabilité, au-dessus de { $limit_written }, ce qu'une bonne réponse ne dépasse qu'une fois sur un million)
 
 ## images
@@ -381,7 +381,7 @@ s6-a-triangle-without-vertex-normals = un triangle sans normales aux sommets
 ## s7
 
 s7-a-2-x-2-texture-red = une texture de 2 × 2 (rouge, vert / bleu, blanc), lecture { $lookup } ({ $filter_debug }) en (u{ $s }v) = ({ $u }{ $s }{ $v }), { $what }
-s7-the-camera-at-looking-at-the = la caméra en { $vec_eye } regardant l'origine, up { $vec }, plongée de { $plunge } degrés
+s7-the-camera-at-looking-at-the = la caméra en { $vec_eye } regardant l'origine, up { $vec }, plongée de { $plunge }°
 s7-gave-no-aimed-orientation = { $what } : ne donne aucune orientation visée (Orientation::Aimed)
 s7-the-eye = { $what } : l'œil
 s7-right-forward-x-up-normalised-the = { $what } : right (vers la droite) = forward x up, normalisé (l'ordre du produit vectoriel en donne le signe)

@@ -14,7 +14,9 @@
 //! French title the checklist's catalogue gives it (`exercise-sN-K` of
 //! `messages/fr/checklist.ftl`, as `cargo test -- --lang fr` says it).
 //! `{{#timings FILE}}` becomes the table `raycourse bench` printed into
-//! `book/src/FILE`, in French in the French edition ([`crate::timings`]), and the
+//! `book/src/FILE`, in French in the French edition ([`crate::timings`]),
+//! `{{#output NAME}}` what the program printed, in the edition's language
+//! (`book/src/outputs/CODE/NAME.txt`), and the
 //! entries between `{{#sorted}}` and `{{#sorted-end}}` are put in the order of their
 //! terms in the edition's language ([`crate::glossary`]).
 //!
@@ -72,6 +74,8 @@ struct Words {
     french_titles: bool,
     /// A `bench` table as this edition shows it.
     timings: fn(&str) -> String,
+    /// The folder of this edition's outputs, `book/src/outputs/CODE/`.
+    outputs: &'static str,
 }
 
 const ENGLISH: Words = Words {
@@ -83,6 +87,7 @@ const ENGLISH: Words = Words {
     and: " and ",
     french_titles: false,
     timings: str::to_owned,
+    outputs: "en",
 };
 
 const FRENCH: Words = Words {
@@ -94,6 +99,7 @@ const FRENCH: Words = Words {
     and: " et ",
     french_titles: true,
     timings: crate::timings::french,
+    outputs: "fr",
 };
 
 /// Where the preprocessor reads what it fills in.
@@ -145,7 +151,8 @@ fn fill(
     })?;
     let tables = exercise_tables(&listings, &places.views, words)?;
     let tables = timing_tables(&tables, &places.src, words)?;
-    Ok(captioned(&crate::glossary::sorted(&tables)?))
+    let outputs = outputs(&tables, &places.src, words)?;
+    Ok(captioned(&crate::glossary::sorted(&outputs)?))
 }
 
 /// `content` with each image alone on its line made a `<figure>` with a visible
@@ -232,6 +239,18 @@ fn timing_tables(content: &str, src: &Path, words: &Words) -> Result<String, Str
         let table = std::fs::read_to_string(&file)
             .map_err(|e| format!("the timings {}: {e}", file.display()))?;
         Ok((words.timings)(&table))
+    })
+}
+
+/// `content` with each `{{#output NAME}}` replaced by what the program printed in
+/// this edition's language, kept in `src/outputs/CODE/NAME.txt` by the scripts that
+/// run it (`book/outputs.sh` for `check`, `.ci/exercises` for the checklist).
+fn outputs(content: &str, src: &Path, words: &Words) -> Result<String, String> {
+    crate::directive::replace(content, "output", |name| {
+        let file = src.join(format!("outputs/{}/{name}.txt", words.outputs));
+        let text = std::fs::read_to_string(&file)
+            .map_err(|e| format!("the output {}: {e}", file.display()))?;
+        Ok(text.trim_end().to_owned())
     })
 }
 
@@ -435,7 +454,7 @@ fn mark_gained(before: &str, after: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{captioned, french_title, mark_gained};
+    use super::{ENGLISH, FRENCH, captioned, french_title, mark_gained, outputs};
 
     /// The title is the exercise's own message of the French catalogue, not a
     /// neighbour's nor its section.
@@ -450,6 +469,23 @@ mod tests {
         assert_eq!(title("s1.1").as_deref(), Some("le premier"));
         assert_eq!(title("s1.2").as_deref(), Some("le\u{a0}second"));
         assert_eq!(title("s1.3"), None);
+    }
+
+    /// Each edition shows the output in its own language, without the file's final
+    /// newline; a missing output is an error that names its file.
+    #[test]
+    fn an_output_is_taken_in_the_edition_s_language() {
+        let src = tempfile::tempdir().unwrap();
+        for (code, text) in [("en", "glass: differs\n"), ("fr", "glass : diffère\n")] {
+            std::fs::create_dir_all(src.path().join("outputs").join(code)).unwrap();
+            std::fs::write(src.path().join(format!("outputs/{code}/check.txt")), text).unwrap();
+        }
+        let page = "```text\n{{#output check}}\n```";
+        let filled = |words| outputs(page, src.path(), words).unwrap();
+        assert_eq!(filled(&ENGLISH), "```text\nglass: differs\n```");
+        assert_eq!(filled(&FRENCH), "```text\nglass : diffère\n```");
+        let missing = outputs("{{#output other}}", src.path(), &ENGLISH).unwrap_err();
+        assert!(missing.contains("outputs/en/other.txt"), "{missing}");
     }
 
     #[test]
