@@ -2,8 +2,9 @@
 // becomes a canvas rendered by the crate itself, compiled to WebAssembly and run in
 // one Web Worker per core (workers.js), with the controls that session teaches. Each
 // demo starts from its stage's own scene file; a control edits keys of that file,
-// and the image is rendered again: first with one sample per pixel, then with all of
-// them, band by band. `?live-size=64` in the page's address renders smaller (the
+// and the image is rendered again: first a quick look (one pixel for each block of
+// 4 x 4, drawn as a block), then with one sample per pixel, then with all of them,
+// band by band. `?live-size=64` in the page's address renders smaller (the
 // book's browser tests use it).
 (function () {
   "use strict";
@@ -110,6 +111,10 @@
   /** The page's `?live-size=N`, if any. */
   const sizeOverride = Number(new URLSearchParams(location.search).get("live-size")) || 0;
   const BAND = 8;
+  /** The side of the blocks of a render's first look, which traces one pixel in
+   * PREVIEW x PREVIEW (a sixteenth of the rays): brute force's first picture in a
+   * sixteenth of its first pass's time. */
+  const PREVIEW = 4;
 
   class LiveDemo {
     constructor(root) {
@@ -241,12 +246,15 @@
       return edits;
     }
 
-    /** Renders the scene again: one sample per pixel first, then all of them. */
+    /** Renders the scene again: where it takes several samples, a first look in
+     * blocks and one sample per pixel first, then all of them. */
     render() {
       this.job += 1;
       const samples = this.values.samples || this.stage.file.render.samples || 1;
-      const passes = samples > 1 && !still ? [1, samples] : [samples];
+      const pass = (count, scale = 1) => ({ samples: count, scale });
+      const passes = samples > 1 && !still ? [pass(1, PREVIEW), pass(1), pass(samples)] : [pass(samples)];
       this.held = [];
+      delete this.root.dataset.lookMs;
       this.describe(0);
       this.pending = { passes, bands: Math.ceil(this.size / BAND), done: 0, rays: 0, started: performance.now() };
       this.edited = this.edits();
@@ -260,11 +268,22 @@
       });
     }
 
+    /** Draws a band's pixels; a first look's, each pixel as a block of its scale. */
     paint(message) {
-      const rows = message.rgba.length / (4 * this.size);
-      const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), this.size, rows);
+      const scale = this.pending.passes[message.pass].scale;
+      const width = this.size / scale;
+      const rows = message.rgba.length / (4 * width);
+      const pixels = new ImageData(new Uint8ClampedArray(message.rgba.buffer), width, rows);
+      const context = this.canvas.getContext("2d");
       if (still) this.held.push([pixels, message.first]);
-      else this.canvas.getContext("2d").putImageData(pixels, 0, message.first);
+      else if (scale === 1) context.putImageData(pixels, 0, message.first);
+      else {
+        this.small = this.small || element("canvas");
+        [this.small.width, this.small.height] = [width, rows];
+        this.small.getContext("2d").putImageData(pixels, 0, 0);
+        context.imageSmoothingEnabled = false;
+        context.drawImage(this.small, 0, 0, width, rows, 0, message.first, this.size, rows * scale);
+      }
     }
 
     /** The image's text alternative, which follows it: the stage, what the controls
@@ -290,16 +309,17 @@
       p[message.pass] = (p[message.pass] || 0) + 1;
       if (p[message.pass] < this.workers.length) return;
       const ms = performance.now() - p.started;
-      const samples = p.passes[message.pass];
-      const first = message.pass === 0;
-      if (first) this.root.dataset.firstMs = Math.round(ms);
+      const { samples, scale } = p.passes[message.pass];
+      const look = scale > 1;
+      if (look) this.root.dataset.lookMs = Math.round(ms);
+      else if (p.firstMs === undefined) p.firstMs = this.root.dataset.firstMs = Math.round(ms);
       this.functions.textContent = message.functions.join(", ");
       this.functionsTitle.textContent = say(this.values.fast ? "page-functions-fast" : "page-functions-course");
       const last = message.pass === p.passes.length - 1;
       if (still && last) for (const [pixels, first] of this.held) this.canvas.getContext("2d").putImageData(pixels, 0, first);
-      if (last || !still) this.describe(samples);
-      const pass = { stage: this.stage.name, size: this.size, samples, time: duration(ms), workers: this.workers.length };
-      this.status(say(last ? "page-pass-done" : "page-pass-refining", pass), last ? "done" : "working");
+      if (last || !(still || look)) this.describe(samples);
+      const pass = { stage: this.stage.name, size: this.size, samples, scale, time: duration(ms), workers: this.workers.length };
+      this.status(say(last ? "page-pass-done" : look ? "page-pass-look" : "page-pass-refining", pass), last ? "done" : "working");
       if (!last) return;
       this.root.dataset.totalMs = Math.round(ms);
       this.root.dataset.edits = JSON.stringify(this.edited);

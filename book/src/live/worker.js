@@ -29,15 +29,18 @@ self.onmessage = async (event) => {
   }
 };
 
-/** Renders the job's passes, band by band: `passes` are sample counts. */
+/** Renders the job's passes, band by band. A pass is `{ samples, scale }`: the
+ * samples per pixel, and 1, or the side of the blocks of pixels that a first look
+ * renders one pixel for (the same scene at `width / scale` x `height / scale`), its
+ * bands then `band / scale` rows from `first / scale`. */
 async function render(job) {
-  for (const [pass, samples] of job.passes.entries()) {
-    const demo = new Demo(job.stage, JSON.stringify(job.edits), job.width, job.height, samples);
+  for (const [pass, { samples, scale }] of job.passes.entries()) {
+    const demo = new Demo(job.stage, JSON.stringify(job.edits), job.width / scale, job.height / scale, samples);
     try {
       for (const first of job.bands) {
         if (job.job !== current) return;
         const started = performance.now();
-        const rgba = demo.rows(first, job.band);
+        const rgba = demo.rows(first / scale, job.band / scale);
         const ms = performance.now() - started;
         self.postMessage({ kind: "rows", job: job.job, pass, first, rgba, ms }, [rgba.buffer]);
         await yieldToMessages();
