@@ -187,7 +187,8 @@ fn rust_like(folder: &Path, extension: &str) -> Vec<String> {
 /// The view's README: what it is and how to go on.
 fn readme(session: u32) -> String {
     let next = session + 1;
-    let go_on = if session < 7 {
+    let last = crate::cfg::last_session();
+    let go_on = if session < last {
         format!(
             "## Going on to session {next}\n\n\
              Build session {next} here: add its files, its stages' scene files in \
@@ -204,7 +205,7 @@ fn readme(session: u32) -> String {
          the code, scene files, assets, tests and snapshots of sessions 1 to {session}, \
          and nothing of the later ones. It was written by `cargo xtask view s{session}` \
          from the course's crate, which holds every session behind the Cargo features \
-         `s1` to `s7`; here there are no session features.\n\n\
+         `s1` to `s{last}`; here there are no session features.\n\n\
          ```sh\n\
          cargo run --release -- list          # the stages of sessions 1 to {session}\n\
          cargo run --release -- s{session} <stage>        # render one\n\
