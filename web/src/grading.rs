@@ -136,7 +136,8 @@ impl Class {
     }
 
     /// The folders to grade: the chosen one if it holds a stage's image, else the
-    /// students' folders inside it.
+    /// students' folders inside it, none if no student's folder holds one either
+    /// (as `check --all` refuses such a folder).
     fn layout(&mut self) -> &Vec<PathBuf> {
         if self.folders.is_none() {
             let root = self.root();
@@ -148,7 +149,15 @@ impl Class {
                     let first = rest.iter().next()?;
                     (rest.components().count() > 1).then(|| root.join(first))
                 });
-                students_among(inside.collect::<Vec<_>>())
+                let students = students_among(inside.collect::<Vec<_>>());
+                let exists = |p: &Path| self.files.contains_key(p);
+                match students
+                    .iter()
+                    .any(|s| image_of_any_stage(s, &exists).is_some())
+                {
+                    true => students,
+                    false => vec![],
+                }
             };
             self.folders = Some(folders);
         }
@@ -262,5 +271,20 @@ mod tests {
             "{sheet}"
         );
         assert!(sheet.contains("\nglass,2,"), "{sheet}");
+    }
+
+    #[test]
+    fn a_class_whose_folders_hold_no_stage_s_image_has_nothing_to_grade() {
+        let mut class = Class::telling("en", |_| {});
+        class.add("class/alice/notes.png", b"not a picture".to_vec());
+        class.add("class/bob/glass-old.png", png("glass", 24, None));
+        assert!(!class.is_one_folder());
+        assert_eq!(class.folders(), 0);
+        class.add("class/carol/glass.png", png("glass", 24, None));
+        assert_eq!(
+            class.folders(),
+            3,
+            "a class with one stage's image grades all"
+        );
     }
 }

@@ -390,6 +390,15 @@ async function checks(browser, base) {
       assert(graded.errors.length === 0, `the ${language} page reported errors: ${graded.errors.join("; ")}`);
     }
   });
+  await test("the check page says, in its reader's language, that a folder holds no stage's image", async () => {
+    const empty = path.join(scratch, "no-stages");
+    fs.mkdirSync(path.join(empty, "alice"), { recursive: true });
+    fs.writeFileSync(path.join(empty, "alice", "notes.png"), "not a picture");
+    for (const [edition, said] of [["", "no image of a stage here"], ["fr/", "aucune image d'une étape ici"]]) {
+      const graded = await gradeInPage(browser, `${base}${edition}check.html`, empty);
+      assert(graded.state === "error" && graded.report.includes(said), `the ${edition || "en/"} page says ${graded.state}: ${graded.report}`);
+    }
+  });
   await test("the check page refuses a file that is not an image", async () => {
     const text = path.join(scratch, "notes.png");
     fs.writeFileSync(text, "not a picture");

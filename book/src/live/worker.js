@@ -3,7 +3,7 @@
 // starts one worker per core; each renders the bands of rows it is given and posts
 // each band's pixels as soon as it is done. A newer job makes the worker drop the
 // rest of the older one between two bands.
-import init, { Class, Demo, check_image, stages } from "./pkg/raycourse_web.js";
+import init, { Class, Demo, check_image, message as say, stages } from "./pkg/raycourse_web.js";
 
 const ready = init();
 let current = -1;
@@ -85,9 +85,7 @@ function grade(job) {
   try {
     for (const file of job.files) graded.add(file.path, new Uint8Array(file.bytes));
     const count = graded.folders();
-    if (count === 0) throw new Error(job.language === "fr"
-      ? "aucune image d'une étape ici, ni dans le dossier d'un étudiant\u00a0: nommez chaque image d'après son étape, comme glass.png"
-      : "no image of a stage here, nor in a student's folder: name each image after its stage, such as glass.png");
+    if (count === 0) throw new Error(say(job.language, "page-grade-no-stage", "{}"));
     for (let done = 1, lines; (lines = graded.gradeNext()) !== undefined; done++) {
       self.postMessage({ kind: "graded", job: job.job, lines, done, count });
     }
