@@ -50,6 +50,17 @@ check-no-hint = {"  "}hint: no classic mistake explains the difference; compare 
 ## An image that cannot be read. $error: what the image library says.
 check-unreadable = not a PNG, JPEG or PPM image that can be read: { $error }
 
+## What check says of the files it is given, after the file's name. $error: what
+## the system says.
+check-cannot-read = cannot read the image: { $error }
+check-not-a-folder = not a folder
+## A folder (check --all, or the check page's class) with no image named after a
+## stage, neither in it nor in a student's folder inside it.
+check-no-stage = no image of a stage here, nor in a student's folder: name each image after its stage, such as glass.png
+check-no-stage-command = { check-no-stage } (`raycourse list` gives the stages)
+## Where check --all wrote the grading sheet.
+check-sheet-written = grading sheet -> { $path }
+
 ## The classic mistakes: a short name, and the hint (what to look for in one's code).
 
 mistake-no-gamma = no gamma

@@ -95,7 +95,6 @@ page-grade-images = or one student's images, named after their stages
 page-grade = grade
 page-grade-sheet = the grading sheet, grades.csv
 page-grade-choose = choose a class's folder or a student's images first
-page-grade-no-stage = no image of a stage here, nor in a student's folder: name each image after its stage, such as glass.png
 page-grading = grading…
 page-graded = folders graded: { $done } / { $count }
 page-grade-matching = every image matches

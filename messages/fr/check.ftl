@@ -36,6 +36,12 @@ check-no-hint = {"  "}indice : aucune erreur classique n'explique la différenc
 
 check-unreadable = ce n'est pas une image PNG, JPEG ou PPM lisible : { $error }
 
+check-cannot-read = impossible de lire l'image : { $error }
+check-not-a-folder = ce n'est pas un dossier
+check-no-stage = aucune image d'une étape ici, ni dans le dossier d'un étudiant : nommez chaque image d'après son étape, comme glass.png
+check-no-stage-command = { check-no-stage } (`raycourse list` donne les étapes)
+check-sheet-written = feuille de notes -> { $path }
+
 mistake-no-gamma = pas de gamma
     .hint = l'image semble affichée sans correction gamma : écrivez min(255, L^(1/{ NUMBER(2.2) })), et non min(255, L)
 mistake-gamma-twice = gamma deux fois

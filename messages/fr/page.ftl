@@ -87,7 +87,6 @@ page-grade-images = ou les images d'un étudiant, nommées d'après leurs étape
 page-grade = noter
 page-grade-sheet = la feuille de notes, grades.csv
 page-grade-choose = choisissez d'abord le dossier d'une classe ou les images d'un étudiant
-page-grade-no-stage = aucune image d'une étape ici, ni dans le dossier d'un étudiant : nommez chaque image d'après son étape, comme glass.png
 page-grading = notation…
 page-graded = dossiers notés : { $done } / { $count }
 page-grade-matching = toutes les images correspondent

@@ -9,6 +9,7 @@ use image::RgbImage;
 
 use crate::check::report::{Report, Verdict};
 use crate::messages::language::Language;
+use crate::messages::say;
 use crate::scene_file::{Stage, stages};
 
 /// A stage's grade in a student's folder.
@@ -85,17 +86,16 @@ pub fn image_of_any_stage(dir: &Path, exists: Exists) -> Option<PathBuf> {
 }
 
 /// The image in `bytes`, the file `path`, read as its extension says (PNG, JPEG or
-/// PPM), in 8-bit RGB; or why it cannot be read, naming the file.
-pub fn decode(path: &Path, bytes: &[u8]) -> Result<RgbImage, String> {
+/// PPM), in 8-bit RGB; or why it cannot be read, naming the file, in `language`.
+pub fn decode(path: &Path, bytes: &[u8], language: Language) -> Result<RgbImage, String> {
     let mut reader = image::ImageReader::new(std::io::Cursor::new(bytes));
     if let Ok(format) = image::ImageFormat::from_path(path) {
         reader.set_format(format);
     }
     let image = reader.decode().map_err(|e| {
-        format!(
-            "{}: not a PNG, JPEG or PPM image that can be read: {e}",
-            path.display()
-        )
+        let error = e.to_string().into();
+        let why = say(language, "check-unreadable", &[("error", error)]);
+        format!("{}: {why}", path.display())
     })?;
     Ok(image.to_rgb8())
 }

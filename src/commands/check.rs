@@ -15,6 +15,7 @@ use raycourse::check::grading::{
 };
 use raycourse::check::report::{Report, Verdict, check};
 use raycourse::messages::language::Language;
+use raycourse::messages::say;
 use raycourse::render::cache::Folder;
 use raycourse::{Stage, stages};
 
@@ -93,7 +94,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         .image
         .as_deref()
         .expect("clap requires an image without --all");
-    let image = read_image(path)?;
+    let image = read_image(path, args.language())?;
     let report = check_one(&args, stage, &image, path)?;
     for line in report.lines(stage, args.language()) {
         println!("{line}");
@@ -113,11 +114,18 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
     }
 }
 
-/// The image at `path`, as 8-bit RGB; a bad input otherwise.
-fn read_image(path: &Path) -> Result<RgbImage, Failure> {
+/// The image at `path`, as 8-bit RGB; a bad input otherwise, said in `language`.
+fn read_image(path: &Path, language: Language) -> Result<RgbImage, Failure> {
     let bytes = std::fs::read(path)
-        .map_err(|e| Failure::Input(format!("{}: cannot read the image: {e}", path.display())))?;
-    decode(path, &bytes).map_err(Failure::Input)
+        .map_err(|e| refused(path, language, "check-cannot-read", &e.to_string()))?;
+    decode(path, &bytes, language).map_err(Failure::Input)
+}
+
+/// A bad input: the file or folder `path`, then the message `id` in `language`
+/// with `error`, what the system says (if the message takes it).
+fn refused(path: &Path, language: Language, id: &str, error: &str) -> Failure {
+    let why = say(language, id, &[("error", error.to_owned().into())]);
+    Failure::Input(format!("{}: {why}", path.display()))
 }
 
 /// Checks `image` (read from `path`) against `stage`, rendering on the options'
@@ -164,8 +172,9 @@ const RENDERER: &dyn Renderer = &raycourse::check::expected::Course;
 /// class (a folder of students' folders and no stage image of its own), one row per
 /// student.
 fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
+    let language = args.language();
     if !dir.is_dir() {
-        return Err(Failure::Input(format!("{}: not a folder", dir.display())));
+        return Err(refused(dir, language, "check-not-a-folder", ""));
     }
     let students = students(dir).map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
     if image_of_any_stage(dir, ON_DISK).is_none() {
@@ -173,15 +182,10 @@ fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
             .iter()
             .all(|s| image_of_any_stage(s, ON_DISK).is_none())
         {
-            return Err(Failure::Input(format!(
-                "{}: no image of a stage here, nor in a student's folder: name each image after \
-                 its stage, such as glass.png (`raycourse list` gives the stages)",
-                dir.display()
-            )));
+            return Err(refused(dir, language, "check-no-stage-command", ""));
         }
         return grade_class(args, dir, &students);
     }
-    let language = args.language();
     let grades = grade_folder(dir, ON_DISK, |stage, path| check_image(args, stage, path))?;
     for line in folder_lines(&grades, language) {
         println!("{line}");
@@ -213,7 +217,7 @@ fn grade_class(args: &CheckArgs, dir: &Path, students: &[PathBuf]) -> Result<(),
 
 /// The grade of the image at `path` of `stage`: unreadable, or checked.
 fn check_image(args: &CheckArgs, stage: &Stage, path: &Path) -> Result<Grade, Failure> {
-    match read_image(path) {
+    match read_image(path, args.language()) {
         Err(failure) => Ok(Grade::Unreadable(failure.to_string())),
         Ok(image) => Ok(Grade::Checked(Box::new(check_one(
             args, stage, &image, path,
@@ -225,7 +229,11 @@ fn check_image(args: &CheckArgs, stage: &Stage, path: &Path) -> Result<Grade, Fa
 fn write_sheet(args: &CheckArgs, dir: &Path, csv: &str) -> Result<(), Failure> {
     let sheet = args.csv.clone().unwrap_or_else(|| dir.join("grades.csv"));
     write(&sheet, csv.as_bytes())?;
-    println!("grading sheet -> {}", sheet.display());
+    let path = sheet.display().to_string().into();
+    println!(
+        "{}",
+        say(args.language(), "check-sheet-written", &[("path", path)])
+    );
     Ok(())
 }
 

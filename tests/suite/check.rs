@@ -694,25 +694,39 @@ fn a_sheet_shows_formulas_as_text_and_an_empty_folder_is_refused() {
         );
         let said = text(&refused.stderr);
         assert!(said.contains("no image of a stage here"), "{said}");
+        let refused = check(&["--all", folder, "--lang", "fr"]);
+        let said = text(&refused.stderr);
+        assert!(said.contains("aucune image d'une étape ici"), "{said}");
         assert_eq!(said.lines().count(), 1, "one line: {said}");
         assert!(!dir.path().join(folder).join("grades.csv").exists());
     }
 }
 
 /// An image that is not there, or not an image, is a bad input (exit code 2)
-/// named by its file, in one line.
+/// named by its file, in one line, in the language asked for.
 #[test]
 fn an_image_that_cannot_be_read_is_refused_by_name() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("notes.png"), "not a picture").unwrap();
-    for (file, words) in [
-        ("nowhere.png", "nowhere.png: cannot read the image: "),
+    for (file, language, words) in [
+        ("nowhere.png", "en", "nowhere.png: cannot read the image: "),
         (
             "notes.png",
+            "en",
             "notes.png: not a PNG, JPEG or PPM image that can be read: ",
         ),
+        (
+            "nowhere.png",
+            "fr",
+            "nowhere.png: impossible de lire l'image\u{a0}: ",
+        ),
+        (
+            "notes.png",
+            "fr",
+            "notes.png: ce n'est pas une image PNG, JPEG ou PPM lisible\u{a0}: ",
+        ),
     ] {
-        let refused = check_in(dir.path(), &cache(), &["glass", file]);
+        let refused = check_in(dir.path(), &cache(), &["glass", file, "--lang", language]);
         assert_eq!(refused.status.code(), Some(2), "{file}");
         let said = text(&refused.stderr);
         assert!(said.contains(words), "{said}");

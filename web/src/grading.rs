@@ -168,7 +168,7 @@ impl Class {
     /// the stage's reference, rendered once per size for the whole class.
     fn grade(&self, stage: &'static Stage, path: &Path) -> Result<Grade, String> {
         let bytes = &self.files[path];
-        let image = match decode(path, bytes) {
+        let image = match decode(path, bytes, self.language) {
             Ok(image) => image,
             Err(why) => return Ok(Grade::Unreadable(why)),
         };

@@ -85,7 +85,7 @@ function grade(job) {
   try {
     for (const file of job.files) graded.add(file.path, new Uint8Array(file.bytes));
     const count = graded.folders();
-    if (count === 0) throw new Error(say(job.language, "page-grade-no-stage", "{}"));
+    if (count === 0) throw new Error(say(job.language, "check-no-stage", "{}"));
     for (let done = 1, lines; (lines = graded.gradeNext()) !== undefined; done++) {
       self.postMessage({ kind: "graded", job: job.job, lines, done, count });
     }
