@@ -85,6 +85,14 @@ pub fn image_of_any_stage(dir: &Path, exists: Exists) -> Option<PathBuf> {
     stages().find_map(|stage| image_of(dir, stage, exists))
 }
 
+/// Whether any of the students' `folders` holds an image of a stage: a class
+/// whose folders hold none has nothing to grade, and is refused.
+pub fn any_stage_image_among(folders: &[PathBuf], exists: Exists) -> bool {
+    folders
+        .iter()
+        .any(|f| image_of_any_stage(f, exists).is_some())
+}
+
 /// The image in `bytes`, the file `path`, read as its extension says (PNG, JPEG or
 /// PPM), in 8-bit RGB; or why it cannot be read, naming the file, in `language`.
 pub fn decode(path: &Path, bytes: &[u8], language: Language) -> Result<RgbImage, String> {

@@ -10,12 +10,12 @@ use image::RgbImage;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::check::expected::{Renderer, Source};
 use raycourse::check::grading::{
-    Grade, ON_DISK, class_sheet, decode, folder_lines, folder_sheet, grade_folder,
-    image_of_any_stage, lossy, student_line, students,
+    Grade, ON_DISK, any_stage_image_among, class_sheet, decode, folder_lines, folder_sheet,
+    grade_folder, image_of_any_stage, lossy, student_line, students,
 };
 use raycourse::check::report::{Report, Verdict, check};
 use raycourse::messages::language::Language;
-use raycourse::messages::say;
+use raycourse::messages::{Argument, say};
 use raycourse::render::cache::Folder;
 use raycourse::{Stage, stages};
 
@@ -116,15 +116,21 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
 
 /// The image at `path`, as 8-bit RGB; a bad input otherwise, said in `language`.
 fn read_image(path: &Path, language: Language) -> Result<RgbImage, Failure> {
-    let bytes = std::fs::read(path)
-        .map_err(|e| refused(path, language, "check-cannot-read", &e.to_string()))?;
+    let bytes = std::fs::read(path).map_err(|e| {
+        refused(
+            path,
+            language,
+            "check-cannot-read",
+            &[("error", e.to_string().into())],
+        )
+    })?;
     decode(path, &bytes, language).map_err(Failure::Input)
 }
 
 /// A bad input: the file or folder `path`, then the message `id` in `language`
-/// with `error`, what the system says (if the message takes it).
-fn refused(path: &Path, language: Language, id: &str, error: &str) -> Failure {
-    let why = say(language, id, &[("error", error.to_owned().into())]);
+/// with its `arguments`.
+fn refused(path: &Path, language: Language, id: &str, arguments: &[(&str, Argument)]) -> Failure {
+    let why = say(language, id, arguments);
     Failure::Input(format!("{}: {why}", path.display()))
 }
 
@@ -174,15 +180,12 @@ const RENDERER: &dyn Renderer = &raycourse::check::expected::Course;
 fn grade(args: &CheckArgs, dir: &Path) -> Result<(), Failure> {
     let language = args.language();
     if !dir.is_dir() {
-        return Err(refused(dir, language, "check-not-a-folder", ""));
+        return Err(refused(dir, language, "check-not-a-folder", &[]));
     }
     let students = students(dir).map_err(|e| Failure::Input(format!("{}: {e}", dir.display())))?;
     if image_of_any_stage(dir, ON_DISK).is_none() {
-        if students
-            .iter()
-            .all(|s| image_of_any_stage(s, ON_DISK).is_none())
-        {
-            return Err(refused(dir, language, "check-no-stage-command", ""));
+        if !any_stage_image_among(&students, ON_DISK) {
+            return Err(refused(dir, language, "check-no-stage-command", &[]));
         }
         return grade_class(args, dir, &students);
     }

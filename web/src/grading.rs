@@ -11,8 +11,8 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use raycourse::Stage;
 use raycourse::check::expected::Source;
 use raycourse::check::grading::{
-    Grade, class_sheet, decode, folder_lines, folder_sheet, grade_folder, image_of_any_stage,
-    lossy, student_line, students_among,
+    Grade, any_stage_image_among, class_sheet, decode, folder_lines, folder_sheet, grade_folder,
+    image_of_any_stage, lossy, student_line, students_among,
 };
 use raycourse::check::report::check;
 use raycourse::messages::language::Language;
@@ -151,12 +151,10 @@ impl Class {
                 });
                 let students = students_among(inside.collect::<Vec<_>>());
                 let exists = |p: &Path| self.files.contains_key(p);
-                match students
-                    .iter()
-                    .any(|s| image_of_any_stage(s, &exists).is_some())
-                {
-                    true => students,
-                    false => vec![],
+                if any_stage_image_among(&students, &exists) {
+                    students
+                } else {
+                    vec![]
                 }
             };
             self.folders = Some(folders);
