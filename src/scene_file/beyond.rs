@@ -12,7 +12,7 @@ use serde::Deserialize;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
-use crate::fast::FastBvh;
+use crate::fast::{FastBruteForce, FastBvh};
 use crate::files::{Disk, Files};
 use crate::maths::Real;
 use crate::maths::values::Positive;
@@ -144,15 +144,18 @@ fn take_keys<'s>(table: &mut Spanned<DeTable<'s>>) -> Spanned<DeTable<'s>> {
     Spanned::new(span, taken)
 }
 
-/// The course's scene of `file`, each mesh searched by the fast engine's hierarchy
-/// where `keys` ask for the fast engine and `render.acceleration` for a hierarchy.
+/// The course's scene of `file`, each mesh searched by the fast engine where `keys`
+/// ask for it: its hierarchy where `render.acceleration` asks for one, and session
+/// 5's searches on lanes ([`FastBruteForce`]) where it asks for none or for the
+/// bounding box.
 fn scene(
     file: &SceneFile,
     keys: &BeyondKeys,
     path: &Path,
     files: &dyn Files,
 ) -> Result<Scene, SceneError> {
-    let fast_bvh = keys.fast && file.render.acceleration == AccelerationSpec::Bvh;
+    let acceleration = file.render.acceleration;
+    let fast_bvh = keys.fast && acceleration == AccelerationSpec::Bvh;
     if keys.leaf_size.is_some() && !fast_bvh {
         return Err(SceneError::Inconsistent {
             path: path.to_owned(),
@@ -162,8 +165,18 @@ fn scene(
                 .into(),
         });
     }
-    if !fast_bvh {
+    if !keys.fast {
         return session7::scene(file, path, files);
+    }
+    if !fast_bvh {
+        let mut scene = session7::scene(file, path, files)?;
+        let boxed = acceleration == AccelerationSpec::Bbox;
+        for mesh in &mut scene.meshes {
+            if let Some(search) = FastBruteForce::build(mesh, boxed) {
+                mesh.search = Arc::new(search);
+            }
+        }
+        return Ok(scene);
     }
     // The course's hierarchy would be built only to be replaced.
     let mut course = file.clone();

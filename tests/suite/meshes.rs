@@ -97,6 +97,15 @@ fn hits(mesh: &Mesh, rays: &[Ray]) -> Vec<Option<MeshHit>> {
         .collect()
 }
 
+/// How many of `rays` the mesh's any-hit test answers otherwise than `nearest`,
+/// their nearest hits, say.
+#[cfg(feature = "beyond")]
+fn any_hit_disagreements(mesh: &Mesh, rays: &[Ray], nearest: &[Option<MeshHit>]) -> usize {
+    (rays.iter().zip(nearest))
+        .filter(|(ray, hit)| mesh.occluded(ray, Real::INFINITY) != hit.is_some())
+        .count()
+}
+
 /// Brute force, bounding box and (from session 6) BVH find the same triangle at the
 /// same distance for every ray, and so do the fast engine's hierarchies beyond the
 /// course.
@@ -139,13 +148,9 @@ fn searches_agree(obj: &str, count: u64) {
                 differing, 0,
                 "fast BVH (leaves of {leaf}, {lanes:?}) differs from brute force"
             );
-            let blocked = rays
-                .iter()
-                .zip(&brute)
-                .filter(|(ray, hit)| mesh.occluded(ray, Real::INFINITY) != hit.is_some())
-                .count();
             assert_eq!(
-                blocked, 0,
+                any_hit_disagreements(&mesh, &rays, &brute),
+                0,
                 "fast BVH's any-hit test differs from the closest hit"
             );
         }
@@ -166,10 +171,13 @@ fn searches_agree_on_the_ogre() {
 }
 
 /// With the course's triangle test, which the fast BVH's single-precision pre-test
-/// does not serve, the fast BVH still finds brute force's hits.
+/// does not serve, the fast BVH still finds brute force's hits; and so do session
+/// 5's searches on lanes, with and without the bounding box, on either kind of
+/// lanes, their any-hit test too.
 #[cfg(feature = "beyond")]
 #[test]
-fn the_fast_bvh_agrees_with_the_course_triangle_test() {
+fn the_fast_searches_agree_with_the_course_triangle_test() {
+    use raycourse::fast::lanes::Lanes;
     let data = read_obj(&asset("spot/spot.obj")).unwrap();
     let mut mesh = unplaced(&data);
     mesh.triangle_test = raycourse::geometry::TriangleTest::MollerTrumbore;
@@ -184,6 +192,24 @@ fn the_fast_bvh_agrees_with_the_course_triangle_test() {
         hits(&mesh, &rays) == brute,
         "fast BVH differs from brute force"
     );
+    for (boxed, lanes) in [
+        (false, Lanes::fastest()),
+        (true, Lanes::fastest()),
+        (false, Lanes::Portable),
+    ] {
+        let fast = raycourse::fast::FastBruteForce::build(&mesh, boxed).unwrap();
+        mesh.search = Arc::new(fast.with_lanes(lanes));
+        let name = format!("{} on {lanes:?}", mesh.search.name());
+        assert!(
+            hits(&mesh, &rays) == brute,
+            "{name} differs from brute force"
+        );
+        assert_eq!(
+            any_hit_disagreements(&mesh, &rays, &brute),
+            0,
+            "{name}'s any-hit test differs from the closest hit"
+        );
+    }
 }
 
 /// A scene in a temporary folder with one mesh entry and the given files.

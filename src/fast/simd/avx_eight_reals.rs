@@ -93,6 +93,12 @@ impl RealLanes for Eight {
     }
 
     #[inline(always)]
+    fn bits(self) -> u32 {
+        // SAFETY: an `Eight` exists only where the processor has AVX.
+        unsafe { _mm256_movemask_ps(self.0) as u32 }
+    }
+
+    #[inline(always)]
     fn step_towards(self, towards: Eight) -> Eight {
         // AVX has no 256-bit integer arithmetic (AVX2 has): each half of four by SSE2.
         // SAFETY: an `Eight` exists only where the processor has AVX.

@@ -128,6 +128,12 @@ impl RealLanes for Four {
         unsafe { _mm256_movemask_pd(self.0) == 0b1111 }
     }
 
+    #[inline(always)]
+    fn bits(self) -> u32 {
+        // SAFETY: a `Four` exists only where the processor has AVX.
+        unsafe { _mm256_movemask_pd(self.0) as u32 }
+    }
+
     /// In two halves, AVX having no 64-bit integer addition on its full registers.
     #[inline(always)]
     fn step_towards(self, towards: Four) -> Four {

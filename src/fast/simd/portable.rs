@@ -85,6 +85,11 @@ impl RealLanes for PortableLanes {
     }
 
     #[inline(always)]
+    fn bits(self) -> u32 {
+        self.to_bitmask()
+    }
+
+    #[inline(always)]
     fn step_towards(self, towards: Self) -> Self {
         step_towards(self, towards)
     }

@@ -56,6 +56,9 @@ pub trait RealLanes:
     /// With `self` a mask: whether every lane is set.
     fn all(self) -> bool;
 
+    /// With `self` a mask: its lanes as bits, bit `k` set where lane `k` is.
+    fn bits(self) -> u32;
+
     /// The float next to `self` (finite, not zero) away from zero where `towards`
     /// (not zero) has the sign of `self`, towards zero where it has the other: the
     /// bits of `self` plus one, or minus one, as in
@@ -105,6 +108,16 @@ pub fn scatter3<F: RealLanes>(v: VectorLanes<F>) -> [[Real; LANES]; 3] {
 #[inline(always)]
 pub fn dot<F: RealLanes>(a: VectorLanes<F>, b: VectorLanes<F>) -> F {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+/// `a x b`, glam's order: `(a_y b_z - b_y a_z, a_z b_x - b_z a_x, a_x b_y - b_x a_y)`.
+#[inline(always)]
+pub fn cross<F: RealLanes>(a: VectorLanes<F>, b: VectorLanes<F>) -> VectorLanes<F> {
+    [
+        a[1] * b[2] - b[1] * a[2],
+        a[2] * b[0] - b[2] * a[0],
+        a[0] * b[1] - b[0] * a[1],
+    ]
 }
 
 /// `s v`, lane by lane.
