@@ -51,7 +51,8 @@ fn camera(scene: &Scene) -> Vec<&'static str> {
 }
 
 /// The meshes' functions: the search its scene file chose, the triangle test, and
-/// the hit record with smooth normals and textures where a mesh has them.
+/// the hit record with smooth normals and textures where a mesh has them. The fast
+/// engine's brute force tests its triangles on lanes, not with the course's test.
 fn meshes(scene: &Scene) -> Vec<&'static str> {
     let Some(first) = scene.meshes.first() else {
         return vec![];
@@ -61,9 +62,11 @@ fn meshes(scene: &Scene) -> Vec<&'static str> {
         "brute force" => "BruteForce::nearest",
         "bounding box" => "BoundingBox::nearest",
         "fast" => "FastBvh::nearest",
+        "brute force, fast" | "bounding box, fast" => "FastBruteForce::nearest",
         _ => "Bvh::nearest",
     });
     names.push(match first.triangle_test {
+        _ if names.contains(&"FastBruteForce::nearest") => "TriangleLanes::hits",
         raycourse::geometry::TriangleTest::MollerTrumbore => "intersect_triangle (Möller-Trumbore)",
         raycourse::geometry::TriangleTest::Watertight => "intersect_triangle (watertight)",
     });
@@ -181,5 +184,28 @@ mod tests {
         assert_eq!(fast("indirect"), ["paths_at_once::row"]);
         let glass = fast("glass");
         assert!(glass.contains(&"refract"), "the course's code: {glass:?}");
+    }
+
+    #[test]
+    fn the_fast_engine_names_its_searches_of_a_mesh() {
+        let searches = |name: &str, edits: &str| {
+            let (scene, _) = crate::demo::scene(name, edits, 16, 16, 0).unwrap();
+            meshes(&scene)[2..4].to_vec()
+        };
+        let fast = r#"{"render.fast": true}"#;
+        for stage in ["mesh", "mesh-bbox"] {
+            assert_eq!(
+                searches(stage, fast),
+                ["FastBruteForce::nearest", "TriangleLanes::hits"]
+            );
+        }
+        assert_eq!(
+            searches("mesh", "{}"),
+            [
+                "BruteForce::nearest",
+                "intersect_triangle (Möller-Trumbore)"
+            ]
+        );
+        assert_eq!(searches("bvh", fast)[0], "FastBvh::nearest");
     }
 }

@@ -108,19 +108,16 @@ mod tests {
         Vec3::new(uniform(rng), uniform(rng), uniform(rng)) * 2.0 - Vec3::ONE
     }
 
-    /// A group's worth of awkward triangles: random ones, a repeat of the first
-    /// (equal distances), one with two equal corners and one with all three in a
-    /// line (no area), and one whose plane holds the ray (`det = 0` or nearly).
-    fn triangles(rng: &mut PixelRng, ray: &Ray) -> Vec<[Vec3; 3]> {
-        let mut group: Vec<[Vec3; 3]> = (0..LANES).map(|_| [0; 3].map(|_| point(rng))).collect();
-        let [a, b, _] = group[0];
-        group[1] = group[0];
-        group[2] = [a, a, b];
-        group[3] = [a, b, a + (b - a) * 2.0];
-        if LANES > 4 {
-            group[4] = [ray.origin, ray.origin + ray.direction, b];
-        }
-        group
+    /// Eight awkward triangles around `first`: itself and a repeat of it (equal
+    /// distances), one with two equal corners, one with its three corners in a line
+    /// (no area), one whose plane holds the ray (`det = 0` or nearly), and three at
+    /// random, to be tested in groups of [`LANES`].
+    fn triangles(rng: &mut PixelRng, first: [Vec3; 3], ray: &Ray) -> Vec<[Vec3; 3]> {
+        let [a, b, _] = first;
+        let mut awkward = vec![first, first, [a, a, b], [a, b, a + (b - a) * 2.0]];
+        awkward.push([ray.origin, ray.origin + ray.direction, b]);
+        awkward.extend((0..3).map(|_| [0; 3].map(|_| point(rng))));
+        awkward
     }
 
     /// A ray aimed at a corner or an edge's middle of `target`, where rounding
@@ -160,18 +157,17 @@ mod tests {
         for _ in 0..50_000 {
             let first = [0; 3].map(|_| point(&mut rng));
             let ray = ray(&mut rng, first);
-            let mut group = triangles(&mut rng, &ray);
-            group[0] = first;
-            group[1] = first;
             let t_max = if uniform(&mut rng) < 0.2 {
                 3.0
             } else {
                 Real::INFINITY
             };
-            assert!(agrees(Portable, &group, &ray, t_max), "{ray:?} {group:?}");
-            #[cfg(target_arch = "x86_64")]
-            if let Some(avx) = crate::fast::simd::avx::Avx::detect() {
-                assert!(agrees(avx, &group, &ray, t_max), "{ray:?} {group:?}");
+            for group in triangles(&mut rng, first, &ray).chunks(LANES) {
+                assert!(agrees(Portable, group, &ray, t_max), "{ray:?} {group:?}");
+                #[cfg(target_arch = "x86_64")]
+                if let Some(avx) = crate::fast::simd::avx::Avx::detect() {
+                    assert!(agrees(avx, group, &ray, t_max), "{ray:?} {group:?}");
+                }
             }
             hits +=
                 u32::from(intersect_triangle(&ray, first[0], first[1], first[2], t_max).is_some());
@@ -190,14 +186,12 @@ mod tests {
                 origin: Vec3::new(0.1, 0.1, 5.0),
                 direction,
             };
-            let group = triangles(&mut rng, &ray);
-            assert!(agrees(Portable, &group, &ray, Real::INFINITY));
-            assert_eq!(
-                TriangleLanes::new(&group)
-                    .hits(Portable, &ray, Real::INFINITY)
-                    .hits,
-                0
-            );
+            let first = [0; 3].map(|_| point(&mut rng));
+            for group in triangles(&mut rng, first, &ray).chunks(LANES) {
+                assert!(agrees(Portable, group, &ray, Real::INFINITY));
+                let found = TriangleLanes::new(group).hits(Portable, &ray, Real::INFINITY);
+                assert_eq!(found.hits, 0);
+            }
         }
     }
 }
