@@ -105,6 +105,8 @@ pub fn render_to_file(
 ) -> Result<(), Failure> {
     let scene = &job.scene;
     if let Some(aov) = options.aov {
+        #[cfg(feature = "beyond")]
+        refuse_cost_of_fast(label, aov, &job.beyond)?;
         let name = format!("{label}-{}.png", aov.name());
         let out = options
             .out
@@ -137,6 +139,24 @@ pub fn render_to_file(
         out.display()
     );
     Ok(())
+}
+
+/// Refuses `--aov cost` with the fast engine: the image counts the tests of the
+/// course's searches, and the fast engine's own searches (its hierarchy, session
+/// 5's triangles on lanes) count none, so its mean would be the spheres' alone.
+#[cfg(feature = "beyond")]
+fn refuse_cost_of_fast(
+    label: &str,
+    aov: Aov,
+    beyond: &raycourse::scene::beyond::Beyond,
+) -> Result<(), Failure> {
+    match aov == Aov::Cost && beyond.fast {
+        true => Err(Failure::Input(format!(
+            "{label}: `--aov cost` counts the tests of the course's searches, which the fast \
+             engine does not run: leave out `--fast` (or `fast = true` in the scene file)"
+        ))),
+        false => Ok(()),
+    }
 }
 
 /// Writes the image of `aov` for `scene` to `out` and prints its closing line: the

@@ -269,6 +269,28 @@ fn the_cost_image_gives_its_mean() {
     );
 }
 
+/// `--aov cost` with the fast engine is refused, naming the option to leave out,
+/// and writes no image: the fast engine's searches count no tests.
+#[cfg(feature = "beyond")]
+#[test]
+fn the_cost_image_refuses_the_fast_engine() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(
+        &[
+            "s5", "mesh", "--width", "8", "--height", "8", "--aov", "cost", "--fast",
+        ],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stdout));
+    let error = text(&out.stderr);
+    assert!(
+        error.contains("mesh: `--aov cost` counts the tests of the course's searches")
+            && error.contains("leave out `--fast`"),
+        "{error}"
+    );
+    assert!(!dir.path().join("out/mesh-cost.png").exists());
+}
+
 /// `probe --scene FILE X Y` follows a scene file's pixel as `probe STAGE X Y` follows
 /// the stage's; a stage with only one coordinate is refused.
 #[test]
