@@ -150,13 +150,13 @@ fn refuse_cost_of_fast(
     aov: Aov,
     beyond: &raycourse::scene::beyond::Beyond,
 ) -> Result<(), Failure> {
-    match aov == Aov::Cost && beyond.fast {
-        true => Err(Failure::Input(format!(
+    if aov == Aov::Cost && beyond.fast {
+        return Err(Failure::Input(format!(
             "{label}: `--aov cost` counts the tests of the course's searches, which the fast \
              engine does not run: leave out `--fast` (or `fast = true` in the scene file)"
-        ))),
-        false => Ok(()),
+        )));
     }
+    Ok(())
 }
 
 /// Writes the image of `aov` for `scene` to `out` and prints its closing line: the

@@ -16,6 +16,7 @@ use crate::fast::{FastBruteForce, FastBvh};
 use crate::files::{Disk, Files};
 use crate::maths::Real;
 use crate::maths::values::Positive;
+use crate::meshes::{Mesh, Search};
 use crate::scene::Scene;
 use crate::scene::beyond::{Beyond, Sampler};
 use crate::scene_file::field_names::field_names;
@@ -168,23 +169,33 @@ fn scene(
     if !keys.fast {
         return session7::scene(file, path, files);
     }
-    if !fast_bvh {
-        let mut scene = session7::scene(file, path, files)?;
-        let boxed = acceleration == AccelerationSpec::Bbox;
-        for mesh in &mut scene.meshes {
-            if let Some(search) = FastBruteForce::build(mesh, boxed) {
-                mesh.search = Arc::new(search);
-            }
-        }
-        return Ok(scene);
-    }
     // The course's hierarchy would be built only to be replaced.
     let mut course = file.clone();
-    course.render.acceleration = AccelerationSpec::None;
+    if fast_bvh {
+        course.render.acceleration = AccelerationSpec::None;
+    }
     let mut scene = session7::scene(&course, path, files)?;
     let leaf_size = keys.leaf_size.map_or(8, NonZeroU16::get);
     for mesh in &mut scene.meshes {
-        mesh.search = Arc::new(FastBvh::build(mesh, leaf_size));
+        if let Some(search) = fast_search(mesh, acceleration, leaf_size) {
+            mesh.search = search;
+        }
     }
     Ok(scene)
+}
+
+/// The fast engine's search of `mesh` for the scene file's `acceleration`: its
+/// hierarchy, with leaves of at most `leaf_size` triangles, or session 5's searches
+/// on lanes; `None` where it has none (the watertight test without a hierarchy),
+/// which leaves the course's search in place.
+fn fast_search(
+    mesh: &Mesh,
+    acceleration: AccelerationSpec,
+    leaf_size: u16,
+) -> Option<Arc<dyn Search>> {
+    match acceleration {
+        AccelerationSpec::Bvh => Some(Arc::new(FastBvh::build(mesh, leaf_size))),
+        other => FastBruteForce::build(mesh, other == AccelerationSpec::Bbox)
+            .map(|search| Arc::new(search) as Arc<dyn Search>),
+    }
 }

@@ -4,6 +4,7 @@
 use raycourse::Scene;
 use raycourse::camera::{Lens, PixelFilter};
 use raycourse::fast::paths::paths_at_once;
+use raycourse::geometry::TriangleTest;
 use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::meshes::MeshAlbedo;
@@ -58,17 +59,11 @@ fn meshes(scene: &Scene) -> Vec<&'static str> {
         return vec![];
     };
     let mut names = vec!["Scene::nearest_mesh", "Mesh::intersect"];
-    names.push(match first.search.name() {
-        "brute force" => "BruteForce::nearest",
-        "bounding box" => "BoundingBox::nearest",
-        "fast" => "FastBvh::nearest",
-        "brute force, fast" | "bounding box, fast" => "FastBruteForce::nearest",
-        _ => "Bvh::nearest",
-    });
-    names.push(match first.triangle_test {
-        _ if names.contains(&"FastBruteForce::nearest") => "TriangleLanes::hits",
-        raycourse::geometry::TriangleTest::MollerTrumbore => "intersect_triangle (Möller-Trumbore)",
-        raycourse::geometry::TriangleTest::Watertight => "intersect_triangle (watertight)",
+    names.extend(match first.search.name() {
+        "brute force, fast" | "bounding box, fast" => {
+            ["FastBruteForce::nearest", "TriangleLanes::hits"]
+        }
+        name => [search_function(name), triangle_test(first.triangle_test)],
     });
     names.push("Mesh::hit_record");
     if scene.meshes.iter().any(|m| !m.normals.is_empty()) {
@@ -82,6 +77,24 @@ fn meshes(scene: &Scene) -> Vec<&'static str> {
         names.extend(["Mesh::uv_at", "Texture::colour", "Texture::texel"]);
     }
     names
+}
+
+/// The `nearest` of the course's search called `name`, or of the fast hierarchy.
+fn search_function(name: &str) -> &'static str {
+    match name {
+        "brute force" => "BruteForce::nearest",
+        "bounding box" => "BoundingBox::nearest",
+        "fast" => "FastBvh::nearest",
+        _ => "Bvh::nearest",
+    }
+}
+
+/// The course's triangle test `test`, as the list names it.
+fn triangle_test(test: TriangleTest) -> &'static str {
+    match test {
+        TriangleTest::MollerTrumbore => "intersect_triangle (Möller-Trumbore)",
+        TriangleTest::Watertight => "intersect_triangle (watertight)",
+    }
 }
 
 /// What the materials and the light bring: Lambert and shadows, mirrors and glass,

@@ -42,13 +42,13 @@ impl TriangleLanes {
     /// The group of `triangles` (one to [`LANES`]), each given by its three corners.
     pub fn new(triangles: &[[Vec3; 3]]) -> TriangleLanes {
         let lane = |k: usize| triangles[k.min(triangles.len() - 1)];
-        let by_axis = |v: &dyn Fn([Vec3; 3]) -> Vec3| {
+        let by_axis = |v: fn([Vec3; 3]) -> Vec3| {
             [0, 1, 2].map(|axis| std::array::from_fn(|k| v(lane(k))[axis]))
         };
         TriangleLanes {
-            a: by_axis(&|[a, _, _]| a),
-            e1: by_axis(&|[a, b, _]| b - a),
-            e2: by_axis(&|[a, _, c]| c - a),
+            a: by_axis(|[a, _, _]| a),
+            e1: by_axis(|[a, b, _]| b - a),
+            e2: by_axis(|[a, _, c]| c - a),
         }
     }
 
