@@ -27,12 +27,15 @@
 
 //! ## The parts of a ray tracer, in the order they depend on each other
 //!
+//! Each module uses only those above it (`cargo test -p xtask` holds this order, the
+//! table's and the `mod` lines' alike).
+//!
 //! | module | what it does | sessions |
 //! |---|---|---|
 //! | [`maths`] | number types, random numbers, sampling | 1, 3 |
 //! | [`files`] | where a scene's meshes and textures are read: the disk, or memory in a web page | 1 |
-//! | [`geometry`] | rays, hit records, spheres, boxes, triangles | 1, 2, 5 |
 //! | [`materials`] | diffuse, mirror, glass, Fresnel glass, textures | 1, 2, 4, 7 |
+//! | [`geometry`] | rays, hit records, spheres, boxes, triangles | 1, 2, 5 |
 //! | [`camera`] | the pinhole, antialiasing, the thin lens, the aimed camera | 1, 3, 4, 7 |
 //! | [`lights`] | the point light, the sphere light | 1, 4 |
 //! | `meshes` | triangle meshes from OBJ files | 5, 6, 7 |
@@ -42,11 +45,11 @@
 //! | [`render`](mod@render) | every pixel, in parallel; the film; PNG files | 1, 3 |
 //! | `samplers` | beyond the course: better-placed samples, adaptive sampling | `beyond` |
 //! | `fast` | beyond the course: the fast engine, the same bytes in less time | `beyond` |
-//! | `engines` | beyond the course: which engine renders a scene | `beyond` |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
-//! | `studies` | beyond the course: error against samples and time, scale sweeps, ray sets | `beyond` |
 //! | [`messages`] | what the program says, in English or French, from one catalogue of messages | 1 |
 //! | [`check`] | an image against the stage's: the comparison (1), a student's image graded with the likely mistake (7) | 1, 7 |
+//! | `engines` | beyond the course: which engine renders a scene | `beyond` |
+//! | `studies` | beyond the course: error against samples and time, scale sweeps, ray sets | `beyond` |
 //! | [`inspect`] | one pixel's path ray by ray; images of normals, depth, objects and cost | 1 |
 //!
 //! A program starts with a [`Stage`] (or a scene file, [`load_scene`]), renders its
@@ -73,11 +76,12 @@ pub mod maths;
 
 pub mod files;
 
+pub mod materials;
+
 pub mod geometry;
 
 pub mod camera;
 pub mod lights;
-pub mod materials;
 
 #[cfg(feature = "s5")]
 pub mod meshes;
@@ -97,17 +101,17 @@ pub mod samplers;
 #[cfg(feature = "beyond")]
 pub mod fast;
 
-#[cfg(feature = "beyond")]
-pub mod engines;
-
 pub mod scene_file;
-
-#[cfg(feature = "beyond")]
-pub mod studies;
 
 pub mod messages;
 
 pub mod check;
+
+#[cfg(feature = "beyond")]
+pub mod engines;
+
+#[cfg(feature = "beyond")]
+pub mod studies;
 
 pub mod inspect;
 

@@ -26,6 +26,8 @@ mod directive;
 mod exercise;
 mod formulas;
 mod glossary;
+#[cfg(test)]
+mod layout;
 mod listings;
 mod manifest;
 // The exercises' markers are read as the checklist reads them, from its own file.
