@@ -9,7 +9,10 @@
 //! an exercise crate also gets the cfg `course_answers`, under which its checklist
 //! takes the course's answers from its dev-dependency `course`.
 //! It also writes the list of the course's stages (`stages.rs` in `OUT_DIR`), one
-//! for each scene file of `sessions/sN/`, from the file's `[stage]` table.
+//! for each scene file of `sessions/sN/`, from the file's `[stage]` table; and
+//! sets the cfg `processor_has_avx` where the processor building the crate for
+//! itself has AVX, so that the fast engine's AVX tests run there and are reported
+//! ignored, with the reason, where it has none.
 
 use std::path::{Path, PathBuf};
 
@@ -43,6 +46,10 @@ fn main() {
     println!("cargo::rustc-check-cfg=cfg(course_answers)");
     if made == "exercises" {
         println!("cargo::rustc-cfg=course_answers");
+    }
+    println!("cargo::rustc-check-cfg=cfg(processor_has_avx)");
+    if builds_for_an_avx_processor() {
+        println!("cargo::rustc-cfg=processor_has_avx");
     }
     println!("cargo::rerun-if-changed=build.rs");
     println!("cargo::rerun-if-changed=Cargo.toml");
@@ -150,4 +157,15 @@ fn stages_of(root: &Path, session: u32) -> Vec<Found> {
         });
     }
     found
+}
+
+/// Whether the crate is built for this very processor (no cross-compiling), and it
+/// has AVX: then the tests that run the fast engine on AVX lanes can run here.
+fn builds_for_an_avx_processor() -> bool {
+    let same = std::env::var("HOST").ok() == std::env::var("TARGET").ok();
+    #[cfg(target_arch = "x86_64")]
+    let avx = std::arch::is_x86_feature_detected!("avx");
+    #[cfg(not(target_arch = "x86_64"))]
+    let avx = false;
+    same && avx
 }

@@ -411,10 +411,9 @@ mod tests {
 
     #[cfg(target_arch = "x86_64")]
     #[test]
+    #[cfg_attr(not(processor_has_avx), ignore = "this processor has no AVX")]
     fn the_avx_lanes_shade_as_the_course_to_the_last_bit() {
-        if let Some(avx) = Avx::detect() {
-            agrees_with_the_course(avx);
-        }
+        agrees_with_the_course(Avx::for_test());
     }
 
     /// Asserts that `lanes` spawn the course's origins where a coordinate of a hit
@@ -439,12 +438,15 @@ mod tests {
     }
 
     #[test]
-    fn origins_in_the_rare_cases_are_the_courses() {
+    fn origins_in_the_rare_cases_are_the_courses_on_portable_lanes() {
         spawn_as_the_course_in_the_rare_cases(Portable);
-        #[cfg(target_arch = "x86_64")]
-        if let Some(avx) = Avx::detect() {
-            spawn_as_the_course_in_the_rare_cases(avx);
-        }
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    #[cfg_attr(not(processor_has_avx), ignore = "this processor has no AVX")]
+    fn origins_in_the_rare_cases_are_the_courses_on_avx_lanes() {
+        spawn_as_the_course_in_the_rare_cases(Avx::for_test());
     }
 
     /// The light samples of a sphere light, from session 4.
@@ -499,12 +501,15 @@ mod tests {
         }
 
         #[test]
-        fn both_lanes_sample_the_light_as_the_course_to_the_last_bit() {
+        fn the_portable_lanes_sample_the_light_as_the_course_to_the_last_bit() {
             sample_the_light_as_the_course(Portable);
-            #[cfg(target_arch = "x86_64")]
-            if let Some(avx) = Avx::detect() {
-                sample_the_light_as_the_course(avx);
-            }
+        }
+
+        #[cfg(target_arch = "x86_64")]
+        #[test]
+        #[cfg_attr(not(processor_has_avx), ignore = "this processor has no AVX")]
+        fn the_avx_lanes_sample_the_light_as_the_course_to_the_last_bit() {
+            sample_the_light_as_the_course(Avx::for_test());
         }
     }
 }

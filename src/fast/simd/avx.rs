@@ -27,6 +27,14 @@ impl Avx {
         std::arch::is_x86_feature_detected!("avx").then_some(Avx(()))
     }
 
+    /// The AVX lanes for a test marked `#[cfg_attr(not(processor_has_avx), ignore =
+    /// ...)]`: the build found AVX on this processor (`build.rs`), so a test that
+    /// runs where it is missing fails rather than passing untested.
+    #[cfg(test)]
+    pub fn for_test() -> Avx {
+        Avx::detect().expect("build.rs found AVX on the building processor; this one has none")
+    }
+
     /// Asks the processor to start loading `item`, every 64-byte cache line of it,
     /// into its nearest cache, so that a read a little later finds it there instead
     /// of waiting on memory. A hint: it reads nothing the program sees and changes no

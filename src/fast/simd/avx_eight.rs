@@ -118,10 +118,9 @@ mod tests {
     /// (zero components, of either sign) and starting inside boxes, and for empty
     /// slots.
     #[test]
+    #[cfg_attr(not(processor_has_avx), ignore = "this processor has no AVX")]
     fn avx_and_portable_lanes_enter_the_same_boxes_to_the_bit() {
-        let Some(avx) = Avx::detect() else {
-            return;
-        };
+        let avx = Avx::for_test();
         let mut rng = pixel_rng(11, 0);
         let mut coordinate = |r: Real| (uniform(&mut rng) * 2.0 - 1.0) * r;
         let mut entered = 0;
@@ -162,10 +161,9 @@ mod tests {
     /// The AVX lanes and the portable ones keep the same triangles of a group, for
     /// rays aimed at the group's corners from near and far.
     #[test]
+    #[cfg_attr(not(processor_has_avx), ignore = "this processor has no AVX")]
     fn avx_and_portable_lanes_keep_the_same_triangles() {
-        let Some(avx) = Avx::detect() else {
-            return;
-        };
+        let avx = Avx::for_test();
         let mut rng = pixel_rng(12, 0);
         let mut point = |r: Real| {
             Vec3::new(uniform(&mut rng), uniform(&mut rng), uniform(&mut rng)) * (2.0 * r)
