@@ -18,9 +18,9 @@ pub mod stage;
 pub mod beyond;
 #[cfg(feature = "beyond")]
 pub mod beyond_options;
-#[cfg(feature = "beyond")]
+#[cfg(feature = "plots")]
 pub mod converge;
-#[cfg(feature = "beyond")]
+#[cfg(feature = "plots")]
 pub mod plot;
 #[cfg(feature = "beyond")]
 pub mod rays;

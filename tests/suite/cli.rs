@@ -241,7 +241,7 @@ fn rays_prints_the_checksums_of_each_set() {
 }
 
 /// The CSV of a study with two variants whose error halves as the samples double.
-#[cfg(feature = "beyond")]
+#[cfg(feature = "plots")]
 fn two_variant_study(
     folder: &Path,
     errors: impl Fn(u32) -> [raycourse::maths::Real; 2],
@@ -266,7 +266,7 @@ fn two_variant_study(
 }
 
 /// `plot` draws a PNG of its size with one colour of line per variant, and labels.
-#[cfg(feature = "beyond")]
+#[cfg(feature = "plots")]
 #[test]
 fn plots_are_pngs_of_the_plot_size_with_two_colours_of_lines() {
     use plotters::style::{Color, Palette, Palette99};
@@ -293,7 +293,7 @@ fn plots_are_pngs_of_the_plot_size_with_two_colours_of_lines() {
 }
 
 /// Exact images have no logarithm of their error: nothing to plot, said, and no file.
-#[cfg(feature = "beyond")]
+#[cfg(feature = "plots")]
 #[test]
 fn exact_images_have_no_plot() {
     let dir = tempfile::tempdir().unwrap();

@@ -18,7 +18,7 @@ mod furnace;
 
 #[cfg(all(feature = "s3", not(feature = "f32")))]
 mod chi2;
-#[cfg(feature = "beyond")]
+#[cfg(feature = "plots")]
 mod converge;
 #[cfg(feature = "beyond")]
 mod engines;

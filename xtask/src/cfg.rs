@@ -1,6 +1,7 @@
 //! `cfg` predicates as a session view sees them: every `feature = "sN"` is known
-//! (true for the sessions the view holds), and so is `feature = "beyond"` (false:
-//! no view holds what goes beyond the course); everything else is left as it was.
+//! (true for the sessions the view holds), and so are `feature = "beyond"` and
+//! `feature = "plots"` (false: no view holds what goes beyond the course);
+//! everything else is left as it was.
 
 use syn::Meta;
 use syn::punctuated::Punctuated;
@@ -35,10 +36,14 @@ fn session_feature(meta: &Meta) -> Option<u32> {
     session_of(&name.value())
 }
 
-/// The session that brings the Cargo feature `name`: `sN` is session N, and
-/// `beyond`, which no view holds, counts as the session after the last.
+/// The features beyond the course: `beyond`, and `plots`, its commands that draw.
+const BEYOND: [&str; 2] = ["beyond", "plots"];
+
+/// The session that brings the Cargo feature `name`: `sN` is session N, and the
+/// features beyond the course, which no view holds, count as the session after
+/// the last.
 pub fn session_of(name: &str) -> Option<u32> {
-    if name == "beyond" {
+    if BEYOND.contains(&name) {
         return Some(last_session() + 1);
     }
     let number = name.strip_prefix('s')?.parse().ok()?;
