@@ -6,8 +6,8 @@ use std::path::Path;
 
 use raycourse::check::compare::same_picture;
 use raycourse::render::png::encode_rgb8;
-use raycourse::scene_file::beyond::{BeyondOverrides, load_with_beyond, stage_with_beyond};
-use raycourse::{Overrides, Render, Scene, Stage};
+use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond, stage_with_beyond};
+use raycourse::{Disk, Overrides, Render, Scene, Stage};
 
 use crate::commands::beyond_options::BeyondArgs;
 use crate::commands::failure::Failure;
@@ -16,25 +16,16 @@ use crate::commands::options::RenderArgs;
 use crate::commands::output::{Timed, timed_render, write};
 
 impl Job {
-    /// The scene file at `path` with `overrides`, and the settings beyond the course
-    /// that it and `options` ask for.
-    pub fn of_file(
+    /// The scene file's text `source` (read from `path`) with `overrides`, and the
+    /// settings beyond the course that it and `options` ask for.
+    pub(super) fn parse(
+        source: &str,
         path: &Path,
         overrides: &Overrides,
         options: &RenderArgs,
     ) -> Result<Job, Failure> {
-        let (scene, beyond) = load_with_beyond(path, overrides, &options.beyond.overrides())?;
-        Ok(Job { scene, beyond })
-    }
-
-    /// The scene of `stage` with `overrides`, and the settings beyond the course
-    /// that `options` ask for.
-    pub fn of_stage(
-        stage: &Stage,
-        overrides: &Overrides,
-        options: &RenderArgs,
-    ) -> Result<Job, Failure> {
-        let (scene, beyond) = stage_with_beyond(stage, overrides, &options.beyond.overrides())?;
+        let beyond = options.beyond.overrides();
+        let (scene, beyond) = parse_with_beyond(source, path, overrides, &beyond, &Disk)?;
         Ok(Job { scene, beyond })
     }
 

@@ -19,8 +19,7 @@ pub fn command(session: u32) -> clap::Command {
         .required(true)
         .help("The stage")
         .value_parser(PossibleValuesParser::new(stage_names(session)));
-    let name = ["s1", "s2", "s3", "s4", "s5", "s6", "s7"][session as usize - 1];
-    RenderArgs::augment_args(clap::Command::new(name).arg(stage))
+    RenderArgs::augment_args(clap::Command::new(format!("s{session}")).arg(stage))
         .about(format!("Render a stage of session {session}"))
 }
 

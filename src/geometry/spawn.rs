@@ -91,25 +91,13 @@ pub fn one_ulp_towards(p: Real, o: Real) -> Real {
 #[cfg(test)]
 mod tests {
     use crate::geometry::{Ray, Sphere};
-    use crate::materials::Material;
-    use crate::maths::{Colour, Real, Vec3};
-
-    fn sphere(centre: Vec3, radius: Real) -> Sphere {
-        Sphere {
-            centre,
-            radius,
-            material: Material::Diffuse {
-                albedo: Colour::ONE,
-            },
-            emission: Colour::ZERO,
-        }
-    }
+    use crate::maths::{Real, Vec3};
 
     #[test]
     fn spawned_rays_never_hit_their_own_sphere() {
         // Rays leaving a convex sphere outwards must miss it; rays entering it must
         // find the far side, not the point they left.
-        let s = sphere(Vec3::new(0.0, -1000.0, 0.0), 990.0);
+        let s = Sphere::white(Vec3::new(0.0, -1000.0, 0.0), 990.0);
         let mut self_hits = 0;
         for k in 0..2000 {
             let a = k as Real * 0.37;

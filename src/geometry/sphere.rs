@@ -23,6 +23,19 @@ pub struct Sphere {
 // ANCHOR_END: sphere
 
 impl Sphere {
+    /// A white diffuse sphere (albedo 1) that emits nothing: the plainest object,
+    /// which tests and examples place by the hundred.
+    pub fn white(centre: Vec3, radius: Real) -> Sphere {
+        Sphere {
+            centre,
+            radius,
+            material: Material::Diffuse {
+                albedo: Colour::ONE,
+            },
+            emission: Colour::ZERO,
+        }
+    }
+
     // ANCHOR: intersect_textbook
     /// The course's ray-sphere test, as the textbook writes it: with `s = O - C`,
     /// `t^2 + 2 (s.d) t + (|s|^2 - R^2) = 0` has the roots
@@ -115,38 +128,27 @@ impl Sphere {
 mod tests {
     use super::*;
 
-    fn sphere(centre: Vec3, radius: Real) -> Sphere {
-        Sphere {
-            centre,
-            radius,
-            material: Material::Diffuse {
-                albedo: Colour::ONE,
-            },
-            emission: Colour::ZERO,
-        }
-    }
-
     fn close(a: Real, b: Real, tolerance: Real) -> bool {
         (a - b).abs() <= tolerance * b.abs().max(1.0)
     }
 
     #[test]
     fn ray_from_outside_hits_the_near_side() {
-        let s = sphere(Vec3::ZERO, 10.0);
+        let s = Sphere::white(Vec3::ZERO, 10.0);
         let ray = Ray::new(Vec3::new(0.0, 0.0, 55.0), -Vec3::Z);
         assert_eq!(s.intersect(&ray), Some(45.0));
     }
 
     #[test]
     fn ray_from_inside_hits_the_far_side() {
-        let s = sphere(Vec3::ZERO, 10.0);
+        let s = Sphere::white(Vec3::ZERO, 10.0);
         let ray = Ray::new(Vec3::new(0.0, 0.0, 3.0), -Vec3::Z);
         assert_eq!(s.intersect(&ray), Some(13.0));
     }
 
     #[test]
     fn sphere_behind_the_ray_is_missed() {
-        let s = sphere(Vec3::ZERO, 10.0);
+        let s = Sphere::white(Vec3::ZERO, 10.0);
         let ray = Ray::new(Vec3::new(0.0, 0.0, 55.0), Vec3::Z);
         assert_eq!(s.intersect(&ray), None);
     }
@@ -156,7 +158,7 @@ mod tests {
     #[test]
     #[cfg(not(feature = "f32"))]
     fn tangent_and_near_tangent_rays() {
-        let s = sphere(Vec3::ZERO, 10.0);
+        let s = Sphere::white(Vec3::ZERO, 10.0);
         let tangent = Ray::new(Vec3::new(10.0, 0.0, 55.0), -Vec3::Z);
         assert!(close(s.intersect(&tangent).unwrap(), 55.0, 1e-12));
         let outside = Ray::new(Vec3::new(10.0 + 1e-9, 0.0, 55.0), -Vec3::Z);
@@ -171,7 +173,7 @@ mod tests {
     fn oblique_ray_distance_matches_geometry() {
         // From (0, 0, 55) towards (3, 4, 0): the chord's midpoint is the projection of
         // the centre on the ray.
-        let s = sphere(Vec3::ZERO, 10.0);
+        let s = Sphere::white(Vec3::ZERO, 10.0);
         let o = Vec3::new(0.0, 0.0, 55.0);
         let ray = Ray::new(o, Vec3::new(3.0, 4.0, -55.0));
         let t = s.intersect(&ray).unwrap();
@@ -186,7 +188,7 @@ mod tests {
     fn far_giant_spheres_are_hit_accurately() {
         // Walls of radius 1e5 whose surface lies 10 units from the origin.
         for axis in [Vec3::X, Vec3::Y, Vec3::Z, -Vec3::X] {
-            let s = sphere(axis * (1e5 + 10.0), 1e5);
+            let s = Sphere::white(axis * (1e5 + 10.0), 1e5);
             let ray = Ray::new(Vec3::ZERO, axis);
             let t = s.intersect(&ray).unwrap();
             // Rounding the centre, about 1e5, moves the surface by a few ulps of 1e5.
@@ -201,7 +203,7 @@ mod tests {
 
     #[test]
     fn the_textbook_formula_agrees_in_the_course_s_scenes() {
-        let s = sphere(Vec3::new(3.0, -1.0, 2.0), 10.0);
+        let s = Sphere::white(Vec3::new(3.0, -1.0, 2.0), 10.0);
         for k in 0..1000 {
             let a = k as Real * 0.0137;
             let ray = Ray::new(
@@ -221,7 +223,7 @@ mod tests {
     fn tiny_far_sphere_is_hit_where_the_textbook_formula_breaks() {
         // A sphere of radius 1e-3 at 1e6: b^2 and c are about 1e12 and their
         // difference 1e-6, below the rounding of either.
-        let s = sphere(Vec3::new(0.0, 0.0, -1e6), 1e-3);
+        let s = Sphere::white(Vec3::new(0.0, 0.0, -1e6), 1e-3);
         let ray = Ray::new(Vec3::new(5e-4, 0.0, 0.0), -Vec3::Z);
         let t = s
             .intersect(&ray)
@@ -238,7 +240,7 @@ mod tests {
 
     #[test]
     fn hit_point_lies_on_the_sphere_within_its_error_bound() {
-        let s = sphere(Vec3::new(3.0, -1000.0, 7.0), 990.0);
+        let s = Sphere::white(Vec3::new(3.0, -1000.0, 7.0), 990.0);
         let ray = Ray::new(Vec3::new(0.0, 0.0, 55.0), Vec3::new(0.3, -1.0, -0.8));
         let hit = s.hit_at(&ray, s.intersect(&ray).unwrap(), 0);
         let off = ((hit.point - s.centre).length() - s.radius).abs();

@@ -4,7 +4,7 @@
 use crate::geometry::{Hit, Ray};
 use crate::inspect::path::Next;
 use crate::materials::Material;
-use crate::maths::{Colour, PI, Real, Vec3};
+use crate::maths::{Colour, Vec3};
 use crate::scene::Scene;
 
 /// How the path went on from `hit`, met by `ray`, in `direction`, with `bounces`
@@ -34,7 +34,11 @@ pub fn next(scene: &Scene, ray: &Ray, hit: &Hit, direction: Vec3, bounces: u32) 
             let cos = direction.dot(hit.facing_the_ray().normal);
             next.kind = "diffuse bounce, drawn with density cos(theta) / pi".into();
             next.cos = Some(cos);
-            next.pdf = Some(cosine_pdf(cos));
+            // A diffuse surface sends a path on from session 3, which draws it so.
+            #[cfg(feature = "s3")]
+            {
+                next.pdf = Some(crate::maths::sampling::cosine_hemisphere_pdf(cos));
+            }
             next.weight = (albedo * roulette).to_array();
         }
         #[cfg(feature = "s2")]
@@ -73,9 +77,4 @@ pub fn end(scene: &Scene, hit: &Hit, bounces: u32) -> String {
         (0, None) => format!("the bounce limit ({}) is reached", settings.bounces),
         _ => "the path ends here".into(),
     }
-}
-
-/// The density of a cosine-weighted direction at `cos`: `cos(theta) / pi`.
-pub fn cosine_pdf(cos: Real) -> Real {
-    cos / PI
 }

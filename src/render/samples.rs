@@ -48,23 +48,31 @@ impl SampleMean {
 // ANCHOR_END: sample_mean
 
 // ANCHOR: samples
-/// The radiance of pixel (`row`, `column`): the mean of the scene's samples, each
-/// the radiance of one path started by a camera ray through a random point of the
-/// pixel ([`sample_ray`](crate::camera::Camera::sample_ray)). The random numbers
-/// come from the pixel's own generator. Samples that are not finite are left out
-/// and counted in [`Tracer::dropped`].
+/// The radiance of pixel (`row`, `column`): the mean of its samples
+/// ([`pixel_samples`]). Samples that are not finite are left out and counted in
+/// [`Tracer::dropped`].
 pub fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Colour {
-    let scene = tracer.scene;
-    let index = u64::from(row) * u64::from(scene.camera.width) + u64::from(column);
-    tracer.rng = pixel_rng(scene.settings.seed, index);
     let mut mean = SampleMean::default();
-    for _ in 0..scene.settings.samples {
-        tracer.samples += 1;
-        let ray = scene.camera.sample_ray(row, column, &mut tracer.rng);
-        mean.add(tracer.radiance(&ray, scene.settings.bounces));
+    for sample in pixel_samples(tracer, row, column) {
+        mean.add(sample);
     }
     tracer.dropped += u64::from(mean.dropped);
     mean.mean()
+}
+
+/// The radiance of each of the scene's samples of pixel (`row`, `column`), in
+/// order: each the radiance of one path started by a camera ray through a random
+/// point of the pixel ([`sample_ray`](crate::camera::Camera::sample_ray)). The
+/// random numbers come from the pixel's own generator.
+pub fn pixel_samples(tracer: &mut Tracer, row: u32, column: u32) -> impl Iterator<Item = Colour> {
+    let scene = tracer.scene;
+    let index = u64::from(row) * u64::from(scene.camera.width) + u64::from(column);
+    tracer.rng = pixel_rng(scene.settings.seed, index);
+    (0..scene.settings.samples).map(move |_| {
+        tracer.samples += 1;
+        let ray = scene.camera.sample_ray(row, column, &mut tracer.rng);
+        tracer.radiance(&ray, scene.settings.bounces)
+    })
 }
 // ANCHOR_END: samples
 

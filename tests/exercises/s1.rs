@@ -5,7 +5,6 @@ use std::path::Path;
 use raycourse::camera::Camera;
 use raycourse::geometry::{Ray, Sphere};
 use raycourse::lights::PointLight;
-use raycourse::materials::Material;
 use raycourse::maths::{Colour, PI, Real, Vec3};
 use raycourse::scene::Scene;
 use raycourse::{Overrides, parse_scene};
@@ -124,18 +123,6 @@ fn in_pixel_units() -> Outcome {
     Ok(())
 }
 
-/// A diffuse sphere for the checks.
-pub fn sphere(centre: Vec3, radius: Real) -> Sphere {
-    Sphere {
-        centre,
-        radius,
-        material: Material::Diffuse {
-            albedo: Colour::ONE,
-        },
-        emission: Colour::ZERO,
-    }
-}
-
 /// Rays from the origin: a sphere of radius 1 at distance 5 is met at `t = 5 - 1`;
 /// from the centre of a sphere of radius 2 the ray leaves at `t = 2`; a sphere behind
 /// the ray, or 2.24 away from its line, is missed; a sphere of radius 1 at
@@ -187,7 +174,7 @@ fn sphere_distance() -> Outcome {
     for (test, intersect) in tests {
         for (what, centre, radius, direction, expected) in cases.clone() {
             let ray = Ray::new(Vec3::ZERO, direction);
-            let gave = intersect(&sphere(centre, radius), &ray);
+            let gave = intersect(&Sphere::white(centre, radius), &ray);
             let right = same_distance(gave, expected, 1e-4);
             ensure(right, || {
                 let radius = decimal(radius.to_string());
@@ -225,7 +212,7 @@ fn far_sphere() -> Outcome {
     };
     let centre = Vec3::new(0.5, 0.0, -far);
     let ray = Ray::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0));
-    let gave = sphere(centre, 1.0).intersect(&ray);
+    let gave = Sphere::white(centre, 1.0).intersect(&ray);
     let expected = far - (0.75 as Real).sqrt();
     ensure(same_distance(gave, Some(expected), 0.05), || {
         say!(

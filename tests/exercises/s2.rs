@@ -1,6 +1,6 @@
 //! Session 2: gamma, the offset of new rays, the shadow ray, reflection, refraction.
 
-use raycourse::geometry::{Hit, Ray};
+use raycourse::geometry::{Hit, Ray, Sphere};
 use raycourse::materials::optics::{reflect, refract};
 use raycourse::maths::{Real, Vec3};
 use raycourse::render::film::display;
@@ -8,7 +8,6 @@ use raycourse::render::film::display;
 use crate::checklist::Exercise;
 use crate::generated;
 use crate::known::{Outcome, close, close_vec, ensure, maybe, vec};
-use crate::s1::sphere;
 use crate::say;
 use crate::words::decimal;
 
@@ -99,7 +98,7 @@ fn hits() -> Vec<(
     ]
     .into_iter()
     .map(|(centre, radius, direction)| {
-        let ball = sphere(centre, radius);
+        let ball = Sphere::white(centre, radius);
         let ray = Ray::new(Vec3::ZERO, direction);
         let t = ball
             .intersect(&ray)

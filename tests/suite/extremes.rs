@@ -12,17 +12,6 @@ use raycourse::maths::{Colour, Real, Vec3};
 /// Whether this build computes in double precision.
 const DOUBLE: bool = cfg!(not(feature = "f32"));
 
-fn sphere(centre: Vec3, radius: Real) -> Sphere {
-    Sphere {
-        centre,
-        radius,
-        material: Material::Diffuse {
-            albedo: Colour::ONE,
-        },
-        emission: Colour::ZERO,
-    }
-}
-
 /// The textbook root `(-b - sqrt(b^2 - 4c)) / 2` (with `a = 1`), kept as the
 /// counter-example: `b^2` and `4c` cancel for small or distant spheres.
 fn textbook_intersect(s: &Sphere, ray: &Ray) -> Option<Real> {
@@ -76,7 +65,7 @@ fn survey(radius: Real, distance: Real, seed: u64) -> Survey {
     for _ in 0..2000 {
         let mut u = || rng.random::<Real>();
         let axis = Vec3::new(u() - 0.5, u() - 0.5, u() - 0.5).normalize();
-        let s = sphere(axis * distance, radius);
+        let s = Sphere::white(axis * distance, radius);
         let origin = Vec3::new(u() - 0.5, u() - 0.5, u() - 0.5);
         // Aim inside the disk the sphere shows, up to 0.9 of its radius off-centre.
         let side = axis.cross(Vec3::new(u(), u(), u())).normalize();
@@ -228,7 +217,7 @@ mod grazing {
         // tangent plane. Where along the surface it enters is ill-conditioned, by
         // 1 / angle: the hit may move by eps / angle along the surface, but it must
         // be found and lie on the surface.
-        let s = sphere(Vec3::ZERO, 1.0);
+        let s = Sphere::white(Vec3::ZERO, 1.0);
         let target = Vec3::Y;
         let mut found = Vec::new();
         for angle in ANGLES {
@@ -300,7 +289,7 @@ mod grazing {
 
     #[test]
     fn rays_starting_on_a_sphere() {
-        let s = sphere(Vec3::ZERO, 1.0);
+        let s = Sphere::white(Vec3::ZERO, 1.0);
         let on = Vec3::X;
         assert_eq!(s.intersect(&Ray::new(on, Vec3::X)), None, "leaving it");
         assert_eq!(

@@ -66,8 +66,7 @@ fn settings(bounces: u32, russian_roulette: Option<Real>) -> Settings {
 /// scenes are grey).
 #[cfg(feature = "s3")]
 fn pixel(tracer: &mut Tracer, row: u32, column: u32) -> Vec<Real> {
-    crate::common::pixel_samples(tracer, row, column)
-        .iter()
+    raycourse::render::samples::pixel_samples(tracer, row, column)
         .map(|c| c.x)
         .collect()
 }

@@ -8,7 +8,7 @@ use raycourse::integrator::Tracer;
 use raycourse::maths::Real;
 use raycourse::{Overrides, Scene, find_stage};
 
-use crate::common::pixel_samples;
+use raycourse::render::samples::pixel_samples;
 
 const SIZE: u32 = 64;
 /// A 6 x 6 patch of the floor, right of the sphere, lit by the light.
@@ -33,7 +33,7 @@ fn patch(scene: &Scene) -> Vec<Vec<Real>> {
     for row in ROWS {
         for column in COLUMNS {
             let samples = pixel_samples(&mut tracer, row, column);
-            pixels.push(samples.iter().map(|c| c.element_sum()).collect());
+            pixels.push(samples.map(|c| c.element_sum()).collect());
         }
     }
     pixels

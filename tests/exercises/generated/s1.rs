@@ -9,7 +9,6 @@ use raycourse::maths::{Colour, PI, Real, Vec3};
 
 use super::{apart, differs, n, near, near_vec, on_generated, ulps, v};
 use crate::known::Outcome;
-use crate::s1::sphere;
 use crate::say;
 
 /// An image side: small and odd ones often (1, 3, 5 ... where `W/2` is not an
@@ -223,18 +222,6 @@ fn plane_of(gave: Vec3, expected: Vec3) -> Option<Real> {
     (k.is_finite() && k > 0.0 && same_xy && other).then_some(theirs)
 }
 
-/// The checks' white diffuse sphere (`crate::s1::sphere`) in the course's crate.
-pub fn course_sphere(centre: Vec3, radius: Real) -> course::geometry::Sphere {
-    course::geometry::Sphere {
-        centre,
-        radius,
-        material: course::materials::Material::Diffuse {
-            albedo: Colour::ONE,
-        },
-        emission: Colour::ZERO,
-    }
-}
-
 /// Where a generated ray starts, seen from the sphere: its distance from the
 /// centre and from the ray's line, in radii.
 #[derive(Clone, Copy, Debug)]
@@ -337,9 +324,9 @@ fn compare_distance(
     course: fn(&course::geometry::Sphere, &course::geometry::Ray) -> Option<Real>,
     textbook: bool,
 ) -> Result<(), String> {
-    let gave = yours(&sphere(centre, radius), &Ray::new(origin, direction));
+    let gave = yours(&Sphere::white(centre, radius), &Ray::new(origin, direction));
     let expected = course(
-        &course_sphere(centre, radius),
+        &course::geometry::Sphere::white(centre, radius),
         &course::geometry::Ray::new(origin, direction),
     );
     let s = (origin - centre).length();
@@ -395,7 +382,7 @@ fn distance_diagnosis(
     let root = (radius * radius - chord * chord).max(0.0).sqrt();
     let (near_root, far_root) = (-sd - root, -sd + root);
     let textbook_gives = course::geometry::Sphere::intersect_textbook(
-        &course_sphere(centre, radius),
+        &course::geometry::Sphere::white(centre, radius),
         &course::geometry::Ray::new(origin, direction),
     );
     let close = |t: Real, r: Real| (t - r).abs() <= 1e-3 * radius + ulps(1024.0) * s.length();
@@ -445,7 +432,7 @@ pub fn nearest_sphere(
     let inputs = (direction(), prop::collection::vec(one, 1..6), scale());
     on_generated("Scene::nearest_sphere", inputs, |(d, spheres, size)| {
         let list = along_the_ray(d, &spheres, size);
-        let scene = scene(list.iter().map(|&(c, r)| sphere(c, r)).collect());
+        let scene = scene(list.iter().map(|&(c, r)| Sphere::white(c, r)).collect());
         let gave = yours(&scene, &Ray::new(Vec3::ZERO, d));
         let expected = course_nearest(&list, d);
         let same = match (gave, expected) {
@@ -481,7 +468,9 @@ fn along_the_ray(d: Vec3, spheres: &[(Real, Real, Real, u8)], size: Real) -> Vec
 fn course_nearest(list: &[(Vec3, Real)], d: Vec3) -> Option<(Real, usize)> {
     let scene = course::scene::Scene::new(
         course::camera::Camera::new(Vec3::ZERO, 1.0, 1, 1),
-        list.iter().map(|&(c, r)| course_sphere(c, r)).collect(),
+        list.iter()
+            .map(|&(c, r)| course::geometry::Sphere::white(c, r))
+            .collect(),
         None,
         course::scene::Settings::default(),
     );

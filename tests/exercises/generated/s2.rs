@@ -5,7 +5,7 @@ use proptest::prelude::*;
 use raycourse::geometry::{Hit, Ray};
 use raycourse::maths::{Real, Vec3};
 
-use super::s1::{course_sphere, direction, scale};
+use super::s1::{direction, scale};
 use super::{apart, differs, n, near_vec, on_generated, ulps, v};
 use crate::known::Outcome;
 use crate::say;
@@ -111,7 +111,7 @@ fn hits() -> impl Strategy<Value = (Vec3, Real, course::geometry::Hit)> {
     )
         .prop_map(|(towards, exponent, radius, at, side, inside)| {
             let centre = (10.0 as Real).powf(exponent) * radius * towards;
-            let ball = course_sphere(centre, radius);
+            let ball = course::geometry::Sphere::white(centre, radius);
             let (start, aim) = if inside {
                 (centre + 0.5 * radius * at, side)
             } else {
@@ -159,7 +159,7 @@ pub fn spawn(yours: impl Fn(&Hit, Vec3) -> Ray) -> Outcome {
             } else {
                 outward
             };
-            let ball = course_sphere(centre, radius);
+            let ball = course::geometry::Sphere::white(centre, radius);
             for d in [out, -out] {
                 let ray = yours(&student_hit(&hit), d);
                 if let Some(why) = spawn_fault(&hit, &ball, &ray, d) {
