@@ -21,7 +21,7 @@ use crate::scene::Scene;
 use crate::scene::beyond::{Beyond, Sampler};
 use crate::scene_file::field_names::field_names;
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
-use crate::scene_file::load::{checked, parse_table, read_source, read_table};
+use crate::scene_file::load::{checked, parse_table, read_table};
 use crate::scene_file::sessions::check_materials;
 use crate::scene_file::{Overrides, SceneError, Stage, session7};
 
@@ -78,16 +78,6 @@ impl BeyondOverrides {
         keys.fast |= self.fast;
         Ok(())
     }
-}
-
-/// Reads and checks the scene file at `path` with `overrides` and `beyond` applied:
-/// the course's scene and what its render uses beyond the course.
-pub fn load_with_beyond(
-    path: &Path,
-    overrides: &Overrides,
-    beyond: &BeyondOverrides,
-) -> Result<(Scene, Beyond), SceneError> {
-    parse_with_beyond(&read_source(path)?, path, overrides, beyond, &Disk)
 }
 
 /// The scene of `stage` at the course's settings but for `overrides` and `beyond`,
