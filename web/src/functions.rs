@@ -98,7 +98,8 @@ fn triangle_test(test: TriangleTest) -> &'static str {
 }
 
 /// What the materials and the light bring: Lambert and shadows, mirrors and glass,
-/// indirect light, the sphere light and its sampling, Russian roulette.
+/// indirect light and its bounces (with Russian roulette where the scene asks for
+/// it), the sphere light and its sampling.
 fn materials(scene: &Scene) -> Vec<&'static str> {
     let settings = &scene.settings;
     let has = |wanted: fn(&Material) -> bool| scene.spheres.iter().any(|s| wanted(&s.material));
@@ -117,7 +118,11 @@ fn materials(scene: &Scene) -> Vec<&'static str> {
         names.extend(lights(scene));
         if settings.indirect {
             names.extend(["Tracer::indirect_light", "Tracer::cosine_direction"]);
-            names.extend(["Tracer::bounce", "Tracer::next_bounce"]);
+            names.push("Tracer::bounce");
+            names.push(match settings.russian_roulette {
+                Some(_) => "Tracer::next_bounce (Russian roulette)",
+                None => "Tracer::next_bounce",
+            });
         }
     }
     names
@@ -140,9 +145,6 @@ fn lights(scene: &Scene) -> Vec<&'static str> {
             names.extend(["SphereLight::sample", "Scene::occluded"]);
         }
         _ => {}
-    }
-    if settings.russian_roulette.is_some() {
-        names.push("Russian roulette");
     }
     names
 }

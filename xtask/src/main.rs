@@ -20,6 +20,8 @@
 //!   as current).
 
 mod book;
+#[cfg(test)]
+mod calls;
 mod cfg;
 mod course;
 mod directive;
