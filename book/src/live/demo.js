@@ -12,8 +12,9 @@
 
   // A control: its id, its label (a message of the catalogue, with its arguments:
   // `["page-light-axis", { axis: "x" }]`, or its id alone), how it reads its starting value from a stage's
-  // scene file (`undefined`: the stage has nothing it could change, and it is
-  // hidden), and the keys of the file it changes (`edit(value, values)`, where
+  // scene file and its render settings as the renderer reads them, defaults
+  // included (`read(file, settings)`; `undefined`: the stage has nothing it could
+  // change, and it is hidden), and the keys of the file it changes (`edit(value, values)`, where
   // `values` holds every control's value by id).
   const range = (id, label, [min, max, step], read, edit, show) =>
     ({ id, kind: "range", label, min, max, step, read, edit, show });
@@ -40,7 +41,7 @@
     ["1e-14", ["page-offset", { epsilon: "10⁻¹⁴" }]],
     ["0", "page-offset-none"],
   ];
-  const samples = range("samples", "page-samples", [1, 256, 1], (f) => f.render.samples || 1, () => ({}));
+  const samples = range("samples", "page-samples", [1, 256, 1], (f, s) => s.samples, () => ({}));
   const accelerations = (names) =>
     choice("acceleration", "page-search", names, (f) => f.render.acceleration || "none",
       (v) => ({ "render.acceleration": v }));
@@ -58,8 +59,9 @@
         (x) => ({ "spheres.0.material": { diffuse: [x, x, x] } })),
     ] },
     2: { size: 256, controls: [
-      toggle("gamma", "page-gamma", (f) => f.render.gamma !== undefined,
-        (on) => ({ "render.gamma": on ? 2.2 : null })),
+      // Off: no gamma key, the renderer's default; on: the file's own gamma.
+      toggle("gamma", "page-gamma", (f, s) => s.gamma !== 1,
+        (on) => (on ? {} : { "render.gamma": null })),
       choice("offset", "page-shadow-offset", offsets, (f) => (f.render.shadows ? "robust" : undefined),
         (x) => ({ "render.shadow_offset": x === "robust" ? null : Number(x) })),
       choice("material", "page-centre-sphere", [["diffuse", "page-diffuse"], ["mirror", "page-mirror"], ["glass", "page-glass"]],
@@ -69,8 +71,7 @@
     ] },
     3: { size: 256, controls: [
       samples,
-      range("bounces", "page-bounces", [0, 10, 1], (f) => (f.render.bounces === undefined ? 5 : f.render.bounces),
-        (x) => ({ "render.bounces": x })),
+      range("bounces", "page-bounces", [0, 10, 1], (f, s) => s.bounces, (x) => ({ "render.bounces": x })),
       toggle("antialiasing", "page-antialiasing", (f) => f.camera.antialiasing !== undefined,
         (on) => ({ "camera.antialiasing": on ? 0.5 : null })),
       fast,
@@ -181,7 +182,7 @@
       this.controls.textContent = "";
       this.inputs = [];
       for (const control of this.setup.controls) {
-        const value = control.read(this.stage.file);
+        const value = control.read(this.stage.file, this.stage.settings);
         if (value === undefined) continue;
         this.values[control.id] = this.start[control.id] = value;
         this.controls.append(this.input(control, value));
@@ -250,7 +251,7 @@
      * blocks and one sample per pixel first, then all of them. */
     render() {
       this.job += 1;
-      const samples = this.values.samples || this.stage.file.render.samples || 1;
+      const samples = this.values.samples || this.stage.settings.samples;
       const pass = (count, scale = 1) => ({ samples: count, scale });
       const passes = samples > 1 && !still ? [pass(1, PREVIEW), pass(1), pass(samples)] : [pass(samples)];
       this.held = [];
