@@ -1,5 +1,6 @@
 // The live book's pages in headless Chromium (Debian's `chromium`, driven by
-// puppeteer-core). Run after `cargo xtask book` and `cargo build --release`:
+// puppeteer-core), served by `cargo xtask serve` (the server of `cargo xtask book
+// --open`). Run after `cargo xtask book` and `cargo build --release`:
 //
 //   node web/tests/browser.mjs           the tests
 //   node web/tests/browser.mjs --speed   the demos' times at 256 x 256, for the book
@@ -18,9 +19,8 @@
 // each image drawn once. A
 // page that throws, logs an error or loads anything from the network fails its
 // test.
-import { execFileSync, spawnSync } from "node:child_process";
+import { execFileSync, spawn, spawnSync } from "node:child_process";
 import fs from "node:fs";
-import http from "node:http";
 import os from "node:os";
 import path from "node:path";
 import puppeteer from "puppeteer-core";
@@ -32,20 +32,22 @@ const sessions = fs.readdirSync(book).map((f) => f.match(/^session(\d+)\.html$/)
   .map((m) => Number(m[1])).sort((a, b) => a - b);
 const raycourse = process.env.RAYCOURSE || path.join(root, "target/release/raycourse");
 const scratch = fs.mkdtempSync(path.join(os.tmpdir(), "raycourse-browser-"));
-const TYPES = { ".html": "text/html", ".js": "text/javascript", ".css": "text/css", ".wasm": "application/wasm",
-  ".svg": "image/svg+xml", ".png": "image/png", ".woff2": "font/woff2" };
+const xtask = process.env.XTASK || path.join(root, "target/debug/xtask");
 
-/** Serves the built book on 127.0.0.1; resolves to its address. */
+/** Serves the built book on 127.0.0.1 with `cargo xtask serve` (built by `cargo
+ * xtask book`); resolves to the server's process and its address, which the first
+ * line it prints names. */
 function serve() {
-  const server = http.createServer((request, response) => {
-    const name = decodeURIComponent(new URL(request.url, "http://x").pathname);
-    const file = path.join(book, path.normalize(name).replace(/^(\.\.[/\\])+/, ""));
-    fs.readFile(file.endsWith("/") ? path.join(file, "index.html") : file, (error, body) => {
-      response.writeHead(error ? 404 : 200, { "Content-Type": TYPES[path.extname(file)] || "application/octet-stream" });
-      response.end(error ? "not found" : body);
+  const server = spawn(xtask, ["serve", book], { stdio: ["ignore", "pipe", "inherit"] });
+  return new Promise((resolve, reject) => {
+    let printed = "";
+    server.on("error", reject);
+    server.stdout.on("data", (chunk) => {
+      printed += chunk;
+      const address = printed.match(/ at (http:\/\/127\.0\.0\.1:\d+\/)/);
+      if (address) resolve([server, address[1]]);
     });
   });
-  return new Promise((resolve) => server.listen(0, "127.0.0.1", () => resolve([server, `http://127.0.0.1:${server.address().port}/`])));
 }
 
 /** A new page that records what it throws and logs as an error; `before(page)`
@@ -596,7 +598,7 @@ try {
   }
 } finally {
   await browser.close();
-  server.close();
+  server.kill();
 }
 const failed = results.filter(([, error]) => error).length;
 if (results.length) console.log(`${results.length - failed} passed, ${failed} failed`);

@@ -92,7 +92,7 @@ pub fn build(root: &Path, open: bool) -> Result<(), String> {
     }
     println!("the live book -> {} (French: fr/)", html.display());
     if open {
-        crate::serve::serve(&html)?;
+        crate::serve::serve(&html, true)?;
     }
     Ok(())
 }

@@ -12,6 +12,8 @@
 //!   formulas whole through the translation (mdBook runs them);
 //! - `cargo xtask book [--open]`: the live book, the crate compiled to WebAssembly
 //!   for its demos and check page, in `book/build/` (`--open`: served and opened);
+//! - `cargo xtask serve DIR`: the files of `DIR` served on 127.0.0.1, as `book
+//!   --open` serves the book (the browser tests serve it so);
 //! - `cargo xtask book-tools`: mdBook, its formula preprocessor and its translation
 //!   tools, installed where missing at the versions the book is built with (pinned
 //!   there alone: CI and the translation check call this);
@@ -68,7 +70,7 @@ fn run(args: &[String]) -> Result<(), String> {
     let usage = "usage: cargo xtask view sN DIR | cargo xtask views DIR | \
                  cargo xtask exercise sN DIR [--only sN.K] [--switch] | cargo xtask exercises | \
                  cargo xtask mdbook-listings | cargo xtask mdbook-formulas hide|show | \
-                 cargo xtask book [--open] | cargo xtask book-tools | \
+                 cargo xtask book [--open] | cargo xtask book-tools | cargo xtask serve DIR | \
                  cargo xtask messages [--accept]";
     match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["view", n, dir] => {
@@ -100,6 +102,7 @@ fn run(args: &[String]) -> Result<(), String> {
         ["book"] => book::build(&root(), false),
         ["book", "--open"] => book::build(&root(), true),
         ["book-tools"] => book::install_tools(&root()),
+        ["serve", dir] => serve::serve(Path::new(dir), false),
         ["messages"] => messages::check(&root(), false),
         ["messages", "--accept"] => messages::check(&root(), true),
         _ => Err(usage.into()),

@@ -1,19 +1,25 @@
-//! The live book served on 127.0.0.1 (`cargo xtask book --open`): a page that loads
-//! WebAssembly and workers needs a server, which must say what each file is (a
-//! module worker is refused without a JavaScript type). Any static host serves the
-//! book as well; this one serves the files of one folder, to this machine only.
+//! The live book served on 127.0.0.1 (`cargo xtask book --open`, and `cargo xtask
+//! serve DIR` for the browser tests, which read the address from its first line): a
+//! page that loads WebAssembly and workers needs a server, which must say what each
+//! file is (a module worker is refused without a JavaScript type). Any static host
+//! serves the book as well; this one serves the files of one folder, to this
+//! machine only.
 
 use std::io::{BufRead, BufReader, Write};
 use std::net::{TcpListener, TcpStream};
 use std::path::{Component, Path, PathBuf};
 
-/// Serves `folder` until the command is stopped, and opens its first page.
-pub fn serve(folder: &Path) -> Result<(), String> {
+/// Serves `folder` until the command is stopped; with `open`, opens its first page
+/// in the desktop's browser. The first line printed names the address.
+pub fn serve(folder: &Path, open: bool) -> Result<(), String> {
     let listener = TcpListener::bind("127.0.0.1:0").map_err(|e| format!("cannot listen: {e}"))?;
     let port = listener.local_addr().map_err(|e| e.to_string())?.port();
     let address = format!("http://127.0.0.1:{port}/");
     println!("serving {} at {address} (Ctrl-C stops)", folder.display());
-    open_browser(&address);
+    std::io::stdout().flush().map_err(|e| e.to_string())?;
+    if open {
+        open_browser(&address);
+    }
     for stream in listener.incoming().flatten() {
         if let Err(e) = answer(stream, folder) {
             eprintln!("{e}");
@@ -41,12 +47,17 @@ fn open_browser(address: &str) {
     }
 }
 
-/// Answers one request: the file it names under `folder`, or 404.
+/// Answers one request: the file it names under `folder`, or 404. The request's
+/// headers are read to their end first: a connection closed with bytes unread is
+/// reset, and a browser may then lose the answer.
 fn answer(mut stream: TcpStream, folder: &Path) -> Result<(), String> {
+    let mut reader = BufReader::new(&stream);
     let mut request = String::new();
-    BufReader::new(&stream)
-        .read_line(&mut request)
-        .map_err(|e| e.to_string())?;
+    reader.read_line(&mut request).map_err(|e| e.to_string())?;
+    let mut header = String::new();
+    while reader.read_line(&mut header).map_err(|e| e.to_string())? > 2 {
+        header.clear();
+    }
     let path = request.split_whitespace().nth(1).unwrap_or("/");
     let file = local_file(folder, path);
     let (status, kind, body) = match file.as_deref().map(std::fs::read) {
