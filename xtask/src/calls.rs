@@ -7,7 +7,7 @@
 //! page.
 
 use std::collections::{BTreeMap, BTreeSet};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use syn::visit::Visit;
 
@@ -25,8 +25,12 @@ struct Function {
 /// Every function of the files under `src`, by name (a name may have several).
 fn functions(src: &Path) -> BTreeMap<String, Vec<Function>> {
     let mut all: BTreeMap<String, Vec<Function>> = BTreeMap::new();
-    for file in rust_files(src) {
-        let text = std::fs::read_to_string(&file).expect("a source file");
+    let files = crate::view::rust_files_under(src).expect("the crate's sources");
+    let library = files.iter().filter(|f| {
+        !f.components().any(|c| c.as_os_str() == "commands") && !f.ends_with("main.rs")
+    });
+    for file in library {
+        let text = std::fs::read_to_string(file).expect("a source file");
         let parsed = syn::parse_file(&text).unwrap_or_else(|e| panic!("{file:?}: {e}"));
         let module = file.file_stem().unwrap().to_string_lossy().into_owned();
         let mut definitions = Definitions {
@@ -40,23 +44,6 @@ fn functions(src: &Path) -> BTreeMap<String, Vec<Function>> {
         }
     }
     all
-}
-
-/// The `.rs` files under `folder`, at any depth, but the command line's.
-fn rust_files(folder: &Path) -> Vec<PathBuf> {
-    let mut files = vec![];
-    for entry in std::fs::read_dir(folder).expect("a folder").flatten() {
-        let path = entry.path();
-        if path.ends_with("commands") || path.ends_with("main.rs") {
-            continue;
-        }
-        if path.is_dir() {
-            files.extend(rust_files(&path));
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            files.push(path);
-        }
-    }
-    files
 }
 
 /// Collects a file's functions, with the impl block each is in.

@@ -77,13 +77,12 @@ fn first_names(tree: &syn::UseTree, names: &mut BTreeSet<String>) {
 
 /// Every top-level module that the files of module `name` use, but itself.
 fn uses_of(src: &Path, name: &str) -> BTreeSet<String> {
-    let mut files = vec![];
     let folder = src.join(name);
-    if folder.is_dir() {
-        collect_rust_files(&folder, &mut files);
+    let files = if folder.is_dir() {
+        crate::view::rust_files_under(&folder).expect("a folder")
     } else {
-        files.push(src.join(format!("{name}.rs")));
-    }
+        vec![src.join(format!("{name}.rs"))]
+    };
     let mut uses = Uses::default();
     for file in files {
         let text = std::fs::read_to_string(&file).expect("a source file");
@@ -92,18 +91,6 @@ fn uses_of(src: &Path, name: &str) -> BTreeSet<String> {
     }
     uses.0.remove(name);
     uses.0
-}
-
-/// The `.rs` files under `folder`, at any depth.
-fn collect_rust_files(folder: &Path, files: &mut Vec<std::path::PathBuf>) {
-    for entry in std::fs::read_dir(folder).expect("a folder").flatten() {
-        let path = entry.path();
-        if path.is_dir() {
-            collect_rust_files(&path, files);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            files.push(path);
-        }
-    }
 }
 
 #[test]

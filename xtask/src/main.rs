@@ -14,6 +14,8 @@
 //!   for its demos and check page, in `book/build/` (`--open`: served and opened);
 //! - `cargo xtask serve DIR`: the files of `DIR` served on 127.0.0.1, as `book
 //!   --open` serves the book (the browser tests serve it so);
+//! - `cargo xtask names DIR`: the names the Rust files under `DIR` define, which
+//!   the book's check compares between the crate and each session's view;
 //! - `cargo xtask book-tools`: mdBook, its formula preprocessor and its translation
 //!   tools, installed where missing at the versions the book is built with (pinned
 //!   there alone: CI and the translation check call this);
@@ -38,6 +40,7 @@ mod manifest;
 #[path = "../../tests/exercises/marker.rs"]
 mod marker;
 mod messages;
+mod names;
 mod preprocessor;
 mod prune;
 mod serve;
@@ -71,6 +74,7 @@ fn run(args: &[String]) -> Result<(), String> {
                  cargo xtask exercise sN DIR [--only sN.K] [--switch] | cargo xtask exercises | \
                  cargo xtask mdbook-listings | cargo xtask mdbook-formulas hide|show | \
                  cargo xtask book [--open] | cargo xtask book-tools | cargo xtask serve DIR | \
+                 cargo xtask names DIR | \
                  cargo xtask messages [--accept]";
     match args.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["view", n, dir] => {
@@ -103,6 +107,12 @@ fn run(args: &[String]) -> Result<(), String> {
         ["book", "--open"] => book::build(&root(), true),
         ["book-tools"] => book::install_tools(&root()),
         ["serve", dir] => serve::serve(Path::new(dir), false),
+        ["names", dir] => {
+            names::defined_under(Path::new(dir))?
+                .iter()
+                .for_each(|name| println!("{name}"));
+            Ok(())
+        }
         ["messages"] => messages::check(&root(), false),
         ["messages", "--accept"] => messages::check(&root(), true),
         _ => Err(usage.into()),

@@ -169,6 +169,18 @@ fn rust_files(folder: &Path) -> Result<Vec<PathBuf>, String> {
     Ok(files)
 }
 
+/// The `.rs` files under `folder`, at any depth, sorted.
+pub fn rust_files_under(folder: &Path) -> Result<Vec<PathBuf>, String> {
+    let mut files = rust_files(folder)?;
+    for entry in fs::read_dir(folder).map_err(|e| format!("{}: {e}", folder.display()))? {
+        let path = entry.map_err(|e| e.to_string())?.path();
+        if path.is_dir() {
+            files.extend(rust_files_under(&path)?);
+        }
+    }
+    Ok(files)
+}
+
 /// The stems of the files with extension `extension` directly in `folder`.
 fn rust_like(folder: &Path, extension: &str) -> Vec<String> {
     let entries = fs::read_dir(folder).into_iter().flatten().flatten();
