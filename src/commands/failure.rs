@@ -2,6 +2,9 @@
 
 use std::path::Path;
 
+use raycourse::messages::language::Language;
+use raycourse::messages::say;
+
 /// Why a command failed: its input (exit code 2, as for clap's usage errors), the
 /// machine (exit code 1), or an image that is not the stage's (exit code 1, after
 /// `check`'s report has said why). The message is one line that says what and
@@ -11,6 +14,9 @@ pub enum Failure {
     /// A scene, a file or an argument that cannot be used.
     #[error("{0}")]
     Input(String),
+    /// A scene file that cannot be used, said in the reader's language when shown.
+    #[error("{0}")]
+    Scene(raycourse::SceneError),
     /// Something the machine could not do: start threads, write a file.
     #[error("{0}")]
     Machine(String),
@@ -42,15 +48,24 @@ impl Failure {
     /// that differs.
     pub fn exit_code(&self) -> std::process::ExitCode {
         match self {
-            Failure::Input(_) => std::process::ExitCode::from(2),
+            Failure::Input(_) | Failure::Scene(_) => std::process::ExitCode::from(2),
             Failure::Machine(_) | Failure::Differs => std::process::ExitCode::FAILURE,
         }
+    }
+
+    /// The failure's line on the standard error, in `language`: `error: ` and why.
+    pub fn said(&self, language: Language) -> String {
+        let why = match self {
+            Failure::Scene(error) => error.say(language),
+            other => other.to_string(),
+        };
+        say(language, "command-error", &[("why", why.into())])
     }
 }
 
 impl From<raycourse::SceneError> for Failure {
     fn from(error: raycourse::SceneError) -> Failure {
-        Failure::input(error)
+        Failure::Scene(error)
     }
 }
 

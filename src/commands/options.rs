@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use clap::Args;
 use raycourse::Overrides;
 use raycourse::inspect::aov::Aov;
+use raycourse::messages::language::Language;
 
 use crate::commands::failure::Failure;
 
@@ -82,6 +83,26 @@ pub struct RenderArgs {
     /// (spheres, boxes and triangles tested), into `out/<name>-<kind>.png`.
     #[arg(long, value_parser = aov_parser())]
     pub aov: Option<Aov>,
+    #[command(flatten)]
+    pub lang: LanguageArgs,
+}
+
+/// The language a command speaks: its closing line and its errors.
+#[derive(Args, Clone, Debug, Default)]
+pub struct LanguageArgs {
+    /// The language of the messages, `en` or `fr` (default: the locale's, from
+    /// `LC_ALL`, `LC_MESSAGES` or `LANG`; English unless it is French).
+    #[arg(long, value_parser = ["en", "fr"])]
+    pub lang: Option<String>,
+}
+
+impl LanguageArgs {
+    /// The language asked for: `--lang`, or the environment's.
+    pub fn language(&self) -> Language {
+        self.lang
+            .as_deref()
+            .map_or_else(Language::from_environment, Language::from_locale)
+    }
 }
 
 /// The kinds of `--aov`, by name.
@@ -96,6 +117,11 @@ impl RenderArgs {
     /// aside: `commands/beyond.rs`).
     pub fn overrides(&self) -> Overrides {
         self.scene.overrides()
+    }
+
+    /// The language of the render's messages (`--lang`, or the environment's).
+    pub fn language(&self) -> Language {
+        self.lang.language()
     }
 }
 

@@ -7,6 +7,8 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::inspect::aov::{Aov, see};
 use raycourse::inspect::false_colour::label as label_of;
+use raycourse::messages::language::Language;
+use raycourse::messages::say;
 use raycourse::render::png::encode_rgb8;
 use raycourse::{Render, Scene, encode_png};
 
@@ -117,28 +119,44 @@ pub fn render_to_file(
     let out = options.out.clone().unwrap_or(default_out);
     let timed = timed_render(label, job, options)?;
     write(&out, &encode_png(&timed.result.film, scene.settings.gamma))?;
-    let dropped = match timed.result.dropped {
-        0 => String::new(),
-        n => format!(", {n} non-finite samples dropped"),
-    };
+    #[cfg(feature = "beyond")]
+    options
+        .beyond
+        .write_noise_map(label, scene, &timed.result.samples)?;
+    println!(
+        "{}",
+        closing_line(label, job, &timed, &out, options.language())
+    );
+    Ok(())
+}
+
+/// The closing line of `job`'s render in `language`: its settings, time, rays,
+/// Mrays/s and threads, and where the image went.
+fn closing_line(label: &str, job: &Job, timed: &Timed, out: &Path, language: Language) -> String {
+    let scene = &job.scene;
     let taken = &timed.result.samples;
     let average = taken.iter().map(|&n| f64::from(n)).sum::<f64>() / taken.len() as f64;
     let adaptive = match taken.iter().any(|&n| n != scene.settings.samples) {
-        true => format!(", {average:.1} spp on average"),
+        true => say(language, "render-adaptive", &[("average", average.into())]),
         false => String::new(),
     };
-    #[cfg(feature = "beyond")]
-    options.beyond.write_noise_map(label, scene, taken)?;
-    println!(
-        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{adaptive}{dropped} -> {}",
-        scene.summary(),
-        timed.seconds,
-        timed.result.rays,
-        timed.result.rays as f64 / timed.seconds / 1e6,
-        timed.threads,
-        out.display()
-    );
-    Ok(())
+    let dropped = match timed.result.dropped {
+        0 => String::new(),
+        n => say(language, "render-dropped", &[("dropped", n.into())]),
+    };
+    let rays = timed.result.rays;
+    let arguments = [
+        ("label", label.into()),
+        ("summary", scene.summary(language).into()),
+        ("seconds", timed.seconds.into()),
+        ("rays", rays.into()),
+        ("speed", (rays as f64 / timed.seconds / 1e6).into()),
+        ("threads", timed.threads.into()),
+        ("adaptive", adaptive.into()),
+        ("dropped", dropped.into()),
+        ("out", out.display().to_string().into()),
+    ];
+    say(language, "render-done", &arguments)
 }
 
 /// Refuses `--aov cost` with the fast engine: the image counts the tests of the

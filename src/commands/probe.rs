@@ -12,7 +12,7 @@ use crate::commands::Verb;
 use crate::commands::failure::Failure;
 use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
-use crate::commands::options::SceneArgs;
+use crate::commands::options::{LanguageArgs, SceneArgs};
 
 /// Follow one sample of one pixel ray by ray: each hit, the light, the next
 /// direction and what each ray adds, computed by the renderer's own functions.
@@ -39,6 +39,8 @@ struct ProbeArgs {
     json: bool,
     #[command(flatten)]
     scene_options: SceneArgs,
+    #[command(flatten)]
+    lang: LanguageArgs,
 }
 
 /// The `probe` command.
@@ -87,7 +89,7 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
             .map_err(|e| Failure::Machine(format!("cannot write the probe as JSON: {e}")))?
             + "\n"
     } else {
-        found.to_string()
+        found.text(args.lang.language())
     };
     // A reader that stops early (`| head`) is not a failure.
     match std::io::stdout().write_all(text.as_bytes()) {

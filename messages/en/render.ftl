@@ -1,0 +1,18 @@
+### What a render says when it is done (`raycourse render`, the `sN` commands): its
+### closing line, with the scene's settings in a few words; and the line of a command
+### that fails. The README quotes the English closing line: keep it as it is.
+
+command-error = error: { $why }
+
+## The closing line: `camera: 512x512, 50 spp, ... -> out/camera.png`.
+render-done = { $label }: { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3, useGrouping: "false") } s, { NUMBER($rays, useGrouping: "false") } rays, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: "false") } Mrays/s, { NUMBER($threads, useGrouping: "false") } threads{ $adaptive }{ NUMBER($dropped, useGrouping: "false") } -> { $out }
+render-adaptive = , { NUMBER($average, minimumFractionDigits: 1, maximumFractionDigits: 1, useGrouping: "false") } spp on average
+render-dropped = , { NUMBER($dropped, useGrouping: "false") } non-finite samples dropped
+
+## The scene's settings in a few words.
+summary-settings = { NUMBER($width, useGrouping: "false") }x{ NUMBER($height, useGrouping: "false") }, { NUMBER($samples, useGrouping: "false") } spp, { NUMBER($bounces, useGrouping: "false") } bounces
+summary-gamma = , gamma { $gamma }
+summary-shadows = , shadows
+summary-indirect = , indirect
+summary-light-sampling = , light sampling
+summary-russian-roulette = , Russian roulette

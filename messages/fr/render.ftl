@@ -1,0 +1,33 @@
+### Ce que dit un rendu terminé (`raycourse render`, les commandes `sN`) : sa ligne
+### de fin, avec les réglages de la scène en quelques mots ; et la ligne d'une
+### commande qui échoue.
+
+command-error = erreur : { $why }
+
+## La ligne de fin : `camera : 512 × 512, 50 échantillons par pixel, ... -> out/camera.png`.
+render-done = { $label } : { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3) } s, { NUMBER($rays) } { $rays ->
+        [one] rayon
+       *[other] rayons
+    }, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2) } Mrayons/s, { $threads } { $threads ->
+        [one] fil d'exécution
+       *[other] fils d'exécution
+    }{ $adaptive }{ $dropped } -> { $out }
+render-adaptive = , { NUMBER($average, minimumFractionDigits: 1, maximumFractionDigits: 1) } échantillons par pixel en moyenne
+render-dropped = , { $dropped } { $dropped ->
+        [one] échantillon non fini écarté
+       *[other] échantillons non finis écartés
+    }
+
+## Les réglages de la scène en quelques mots.
+summary-settings = { NUMBER($width, useGrouping: "false") } × { NUMBER($height, useGrouping: "false") }, { $samples } { $samples ->
+        [one] échantillon
+       *[other] échantillons
+    } par pixel, { $bounces } { $bounces ->
+        [one] rebond
+       *[other] rebonds
+    }
+summary-gamma = , gamma { $gamma }
+summary-shadows = , ombres
+summary-indirect = , éclairage indirect
+summary-light-sampling = , échantillonnage de la lumière
+summary-russian-roulette = , roulette russe

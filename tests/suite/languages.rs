@@ -1,0 +1,98 @@
+//! The commands in the reader's language: `--lang fr`, or a French environment,
+//! gives `probe`'s path, a render's closing line and a scene file's errors in
+//! French; English otherwise, as it always read.
+
+use crate::common::{run, run_in_locale, text};
+
+/// The no-break space that French sets before `:` and `;`.
+const NBSP: char = '\u{a0}';
+
+#[test]
+fn probe_speaks_french_when_asked_and_english_otherwise() {
+    let dir = tempfile::tempdir().unwrap();
+    let french = run(
+        &["probe", "glass", "128", "100", "--lang", "fr"],
+        dir.path(),
+    );
+    assert!(french.status.success(), "{}", text(&french.stderr));
+    let french = text(&french.stdout);
+    assert!(
+        french.starts_with("pixel (x 128, y 100), échantillon 0 sur 1"),
+        "{french}"
+    );
+    assert!(
+        french.contains(&format!("niveau 0{NBSP}: le rayon de la caméra")),
+        "{french}"
+    );
+    assert!(
+        french.contains("  rayon    O = (0,0000\u{a0}; 0,0000\u{a0}; 55,0000)"),
+        "{french}"
+    );
+    assert!(french.contains("moyenne de 1 échantillon ("), "{french}");
+    assert!(french.contains("-> gamma 2,2 ->"), "{french}");
+    let from_locale = run_in_locale(&["probe", "glass", "128", "100"], dir.path(), "fr_FR.UTF-8");
+    assert_eq!(text(&from_locale.stdout), french);
+    let english = text(&run(&["probe", "glass", "128", "100"], dir.path()).stdout);
+    assert!(
+        english.starts_with("pixel (x 128, y 100), sample 0 of 1 (from 0)"),
+        "{english}"
+    );
+    assert!(english.contains("level 0: the camera ray"), "{english}");
+    assert!(
+        english.contains("  ray      O = (0.0000, 0.0000, 55.0000)"),
+        "{english}"
+    );
+    assert!(english.contains("mean of 1 sample ("), "{english}");
+}
+
+#[test]
+fn a_bad_scene_file_is_refused_in_french_naming_its_file_line_and_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = "[camera]\nposition = [0, 0, 0]\nfov = 60\n\n[render]\nwidht = 32\n";
+    std::fs::write(dir.path().join("room.toml"), scene).unwrap();
+    let french = run(&["render", "room.toml", "--lang", "fr"], dir.path());
+    assert_eq!(french.status.code(), Some(2));
+    let stderr = text(&french.stderr);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let expected = format!(
+        "erreur{NBSP}: room.toml:6:1: clé `render.widht`{NBSP}: champ inconnu `widht`, attendu l'un de `width`"
+    );
+    assert!(stderr.starts_with(&expected), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    let english = text(&run(&["render", "room.toml"], dir.path()).stderr);
+    let expected =
+        "error: room.toml:6:1: key `render.widht`: unknown field `widht`, expected one of `width`";
+    assert!(english.starts_with(expected), "{english}");
+}
+
+#[test]
+fn a_rule_of_the_scene_file_is_said_in_french() {
+    let dir = tempfile::tempdir().unwrap();
+    let size = ["--width", "10000", "--height", "10000", "--lang", "fr"];
+    let out = run(&[&["s1", "white-disk"][..], &size].concat(), dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = text(&out.stderr);
+    assert!(stderr.contains(&format!("clé `render.width`{NBSP}: 10000{NBSP}×{NBSP}10000 font 100\u{202f}000\u{202f}000 pixels")), "{stderr}");
+}
+
+#[test]
+fn a_french_render_closes_with_a_french_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["s1", "white-disk", "--width", "32", "--height", "24"];
+    let options = ["--out", "disk.png", "-q", "--lang", "fr"];
+    let out = run(&[&args[..], &options].concat(), dir.path());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let line = text(&out.stdout);
+    let start = format!("white-disk{NBSP}: 32{NBSP}×{NBSP}24, 1 échantillon par pixel, ");
+    assert!(line.starts_with(&start), "{line}");
+    assert!(
+        line.contains(" 768 rayons, ") && line.contains(" Mrayons/s, "),
+        "{line}"
+    );
+    assert!(
+        line.contains(" s, ") && line.trim_end().ends_with("-> disk.png"),
+        "{line}"
+    );
+    let seconds = line.split(", ").find(|p| p.ends_with(" s")).unwrap();
+    assert!(seconds.contains(','), "a decimal comma: {line}");
+}
