@@ -43,3 +43,12 @@ probe-light-point-light = point light
 probe-light-sphere-light = sphere light
 probe-shape-sphere = sphere
 probe-shape-mesh = mesh
+
+## Why the probe cannot follow a pixel, and what the command refuses.
+probe-outside = pixel ({ NUMBER($x, useGrouping: "false") }, { NUMBER($y, useGrouping: "false") }) is outside the image, which is { NUMBER($width, useGrouping: "false") }x{ NUMBER($height, useGrouping: "false") }
+probe-no-such-sample = sample { NUMBER($sample, useGrouping: "false") } does not exist: the pixel takes { NUMBER($samples, useGrouping: "false") } (from 0)
+probe-no-stage = no stage `{ $name }` in this build: one of { $names }
+probe-scene-and-stage = with --scene, give only X Y
+probe-give-stage = give STAGE X Y (or --scene FILE X Y)
+probe-beyond-the-course = the probe follows the course's code; this scene asks for { $what }
+probe-not-a-coordinate = `{ $text }` is not a pixel coordinate (0, 1, 2, ...)

@@ -16,3 +16,8 @@ summary-shadows = , shadows
 summary-indirect = , indirect
 summary-light-sampling = , light sampling
 summary-russian-roulette = , Russian roulette
+
+## The closing line of `--aov`: `glass: normal image, from 0 (purple) to 1 (yellow) -> out`.
+render-aov-done = { $label }: { $aov } image{ $range }{ $mean } -> { $out }
+render-aov-range = , from { $low } (purple) to { $high } (yellow)
+render-aov-mean = , mean cost { $mean } tests a ray

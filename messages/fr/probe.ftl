@@ -43,3 +43,12 @@ probe-light-point-light = source ponctuelle
 probe-light-sphere-light = source sphérique
 probe-shape-sphere = sphère
 probe-shape-mesh = maillage
+
+## Pourquoi la sonde ne peut pas suivre un pixel, et ce que la commande refuse.
+probe-outside = le pixel ({ NUMBER($x, useGrouping: "false") }, { NUMBER($y, useGrouping: "false") }) est hors de l'image, qui fait { NUMBER($width, useGrouping: "false") } × { NUMBER($height, useGrouping: "false") }
+probe-no-such-sample = l'échantillon { $sample } n'existe pas : le pixel en prend { $samples } (à partir de 0)
+probe-no-stage = pas d'étape `{ $name }` dans cette compilation : l'une de { $names }
+probe-scene-and-stage = avec --scene, donnez seulement X Y
+probe-give-stage = donnez ÉTAPE X Y (ou --scene FICHIER X Y)
+probe-beyond-the-course = la sonde suit le code du cours ; cette scène demande { $what }
+probe-not-a-coordinate = `{ $text }` n'est pas une coordonnée de pixel (0, 1, 2…)

@@ -31,3 +31,14 @@ summary-shadows = , ombres
 summary-indirect = , éclairage indirect
 summary-light-sampling = , échantillonnage de la lumière
 summary-russian-roulette = , roulette russe
+
+## La ligne de fin de `--aov` : `glass : image des normales, de 0 (violet) à 1 (jaune) -> out`.
+render-aov-done = { $label } : image { $aov ->
+        [normal] des normales
+        [depth] de la profondeur
+        [albedo] de l'albédo
+        [object] des objets
+       *[cost] du coût
+    }{ $range }{ $mean } -> { $out }
+render-aov-range = , de { $low } (violet) à { $high } (jaune)
+render-aov-mean = , coût moyen de { $mean } tests par rayon

@@ -7,8 +7,9 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::inspect::aov::{Aov, see};
 use raycourse::inspect::false_colour::label as label_of;
+use raycourse::messages::catalogue::decimals;
 use raycourse::messages::language::Language;
-use raycourse::messages::say;
+use raycourse::messages::{Argument, say};
 use raycourse::render::png::encode_rgb8;
 use raycourse::{Render, Scene, encode_png};
 
@@ -188,22 +189,39 @@ fn aov_to_file(
 ) -> Result<(), Failure> {
     let image = options.work.pool()?.install(|| see(scene, aov));
     write(out, &encode_rgb8(&image.rgb, image.width, image.height))?;
+    let language = options.language();
     let range = match image.range {
-        Some((low, high)) => format!(
-            ", from {} (purple) to {} (yellow)",
-            label_of(low),
-            label_of(high)
+        Some((low, high)) => say(
+            language,
+            "render-aov-range",
+            &[
+                ("low", written(&label_of(low))),
+                ("high", written(&label_of(high))),
+            ],
         ),
         None => String::new(),
     };
     let mean = match (aov, image.mean) {
-        (Aov::Cost, Some(mean)) => format!(", mean cost {mean:.1} tests a ray"),
+        (Aov::Cost, Some(mean)) => {
+            let mean = written(&format!("{mean:.1}"));
+            say(language, "render-aov-mean", &[("mean", mean)])
+        }
         _ => String::new(),
     };
-    println!(
-        "{label}: {} image{range}{mean} -> {}",
-        aov.name(),
-        out.display()
-    );
+    let arguments = [
+        ("label", label.into()),
+        ("aov", aov.name().into()),
+        ("range", range.into()),
+        ("mean", mean.into()),
+        ("out", out.display().to_string().into()),
+    ];
+    println!("{}", say(language, "render-aov-done", &arguments));
     Ok(())
+}
+
+/// A number as the program wrote it (`0.25`, `12.5`, `3`), its digits kept and
+/// its decimal mark the message's language's.
+fn written(text: &str) -> Argument<'static> {
+    let places = text.split_once('.').map_or(0, |(_, d)| d.len());
+    decimals(text.parse().unwrap_or(f64::NAN), places)
 }

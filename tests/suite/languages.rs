@@ -96,3 +96,40 @@ fn a_french_render_closes_with_a_french_line() {
     let seconds = line.split(", ").find(|p| p.ends_with(" s")).unwrap();
     assert!(seconds.contains(','), "a decimal comma: {line}");
 }
+
+#[test]
+fn probe_refuses_a_pixel_outside_the_image_in_french() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = run(&["probe", "glass", "9999", "0", "--lang", "fr"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = text(&out.stderr);
+    let expected = format!("erreur{NBSP}: le pixel (9999, 0) est hors de l'image, qui fait 512");
+    assert!(stderr.starts_with(&expected), "{stderr}");
+    let english = text(&run(&["probe", "glass", "9999", "0"], dir.path()).stderr);
+    assert!(
+        english.starts_with("error: pixel (9999, 0) is outside the image, which is 512x512"),
+        "{english}"
+    );
+}
+
+#[test]
+fn an_image_of_what_the_renderer_sees_closes_in_french() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["s1", "white-disk", "--width", "16", "--height", "16", "-q"];
+    let french = run(
+        &[&args[..], &["--aov", "depth", "--lang", "fr"]].concat(),
+        dir.path(),
+    );
+    assert!(french.status.success(), "{}", text(&french.stderr));
+    let line = text(&french.stdout);
+    let start = format!("white-disk{NBSP}: image de la profondeur, de ");
+    assert!(
+        line.starts_with(&start) && line.contains("(violet) à"),
+        "{line}"
+    );
+    let english = text(&run(&[&args[..], &["--aov", "depth"]].concat(), dir.path()).stdout);
+    assert!(
+        english.starts_with("white-disk: depth image, from "),
+        "{english}"
+    );
+}
