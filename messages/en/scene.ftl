@@ -33,3 +33,26 @@ scene-leaf-size-needs-fast = only the fast engine's hierarchy has a leaf size: `
 ## A mesh or a texture the scene names.
 scene-cannot-load-mesh = cannot load the mesh: { $why }
 scene-cannot-read-texture = cannot read the texture: { $why }
+
+## What a scene asked for that a later session brings, and how to get it.
+scene-needs-feature-s = needs feature s{ $later }: cargo run --features s{ $later } -- ...
+scene-comes-with-view = comes with session { $later }: this crate stops at session { $session } (`cargo xtask view s{ $later } DIR` in the course's crate writes session { $later }'s)
+scene-comes-with-exercises = comes with session { $later }: you write it then; this crate holds session { $session }'s exercises
+scene-part-mirror = a mirror material
+scene-part-glass = a glass material
+scene-part-fresnel-glass = a Fresnel glass material
+scene-part-gamma = gamma correction
+scene-part-shadows = shadow rays
+scene-part-shadow-offset = a fixed shadow-ray offset
+scene-part-indirect = indirect lighting
+scene-part-antialiasing = antialiasing
+scene-part-light-sampling = light sampling
+scene-part-russian-roulette = Russian roulette
+scene-part-lens = a thin lens
+scene-part-sphere-light = a sphere light
+scene-part-meshes = triangle meshes
+scene-part-acceleration = an acceleration structure
+scene-part-bvh = a bounding volume hierarchy
+scene-part-aimed-camera = an aimed camera
+scene-part-smooth-normals = smooth normals
+scene-part-textures = textures

@@ -34,3 +34,26 @@ scene-leaf-size-needs-fast = seule la hiérarchie du moteur rapide a une taille 
 ## Un maillage ou une texture que nomme la scène.
 scene-cannot-load-mesh = impossible de charger le maillage : { $why }
 scene-cannot-read-texture = impossible de lire la texture : { $why }
+
+## Ce qu'une scène demande qu'une séance suivante apporte, et comment l'obtenir.
+scene-needs-feature-s = demande la fonctionnalité s{ $later } : cargo run --features s{ $later } -- ...
+scene-comes-with-view = vient avec la séance { $later } : cette crate s'arrête à la séance { $session } (`cargo xtask view s{ $later } DIR` dans la crate du cours écrit celle de la séance { $later })
+scene-comes-with-exercises = vient avec la séance { $later } : vous l'écrirez alors ; cette crate contient les exercices de la séance { $session }
+scene-part-mirror = un matériau miroir
+scene-part-glass = un matériau verre
+scene-part-fresnel-glass = un matériau verre de Fresnel
+scene-part-gamma = la correction gamma
+scene-part-shadows = les rayons d'ombre
+scene-part-shadow-offset = un décalage fixe des rayons d'ombre
+scene-part-indirect = l'éclairage indirect
+scene-part-antialiasing = l'antialiasing
+scene-part-light-sampling = l'échantillonnage de la lumière
+scene-part-russian-roulette = la roulette russe
+scene-part-lens = une lentille mince
+scene-part-sphere-light = une source sphérique
+scene-part-meshes = les maillages de triangles
+scene-part-acceleration = une structure d'accélération
+scene-part-bvh = une hiérarchie de volumes englobants
+scene-part-aimed-camera = une caméra orientée
+scene-part-smooth-normals = les normales lissées
+scene-part-textures = les textures

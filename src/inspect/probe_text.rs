@@ -195,7 +195,7 @@ fn triple(v: [Real; 3], language: Language) -> String {
 /// the message's decimal mark.
 fn fixed(value: Real, places: usize) -> Argument<'static> {
     let digits = format!("{value:.places$}");
-    decimals(digits.parse().unwrap_or(f64::from(value)), places)
+    decimals(digits.parse().unwrap_or(f64::NAN), places)
 }
 
 /// `value` in its shortest form, whatever the precision of `Real` (`2.2`, `2,2`).

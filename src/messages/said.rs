@@ -73,7 +73,7 @@ impl Said {
         catalogue.say(self.id, &self.arguments())
     }
 
-    /// Its arguments as the catalogue takes them.
+    /// Its arguments as the catalogue takes them, by name.
     fn arguments(&self) -> Vec<(&str, Argument<'_>)> {
         self.arguments
             .iter()
@@ -85,5 +85,12 @@ impl Said {
                 (*name, argument)
             })
             .collect()
+    }
+}
+
+/// The message in English, the catalogue's source.
+impl std::fmt::Display for Said {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(&self.say(Language::English))
     }
 }

@@ -56,11 +56,12 @@ pub enum SceneError {
         path: PathBuf,
         /// Dotted path of the key.
         key: String,
-        /// What the scene asked for.
-        what: String,
+        /// What the scene asked for: a message of the catalogue's `scene.ftl`
+        /// (`scene-part-mirror`).
+        what: &'static str,
         /// Which session brings it, and how to get it
         /// ([`comes_with`](crate::scene_file::features::comes_with)).
-        remedy: String,
+        remedy: Said,
     },
 }
 
@@ -73,7 +74,8 @@ pub fn one_line(text: &str) -> String {
 impl SceneError {
     /// The error's one line in `language`. The file, the line, the column and the
     /// key are named as they are; what the TOML reader says of a value is its own
-    /// English, but for the words of serde's messages that the catalogue knows.
+    /// English, but for the words of serde's messages that the catalogue knows
+    /// and those of the scene file's own rules.
     pub fn say(&self, language: Language) -> String {
         match self {
             SceneError::Read { path, source } => said("scene-cannot-read", path)
@@ -117,8 +119,8 @@ impl SceneError {
                 remedy,
             } => said("scene-needs-feature", path)
                 .with("key", key.as_str())
-                .with("what", what.as_str())
-                .with("remedy", remedy.as_str())
+                .with("what", Said::new(what).say(language))
+                .with("remedy", remedy.say(language))
                 .say(language),
         }
     }
@@ -192,6 +194,7 @@ mod tests {
     use super::*;
     use crate::maths::Real;
     use crate::maths::values::{Albedo, Degrees, NonNegative, Positive, Probability};
+    use crate::scene_file::features::{Made, remedy};
 
     #[test]
     fn every_rule_of_a_value_is_in_the_catalogue() {
@@ -210,5 +213,25 @@ mod tests {
         }
         let french = value_rule(&messages[1]).unwrap().say(Language::French);
         assert_eq!(french, "nombre supérieur à 0 attendu, trouvé -1");
+    }
+
+    #[test]
+    fn a_part_of_a_later_session_is_named_in_each_language() {
+        let error = SceneError::NeedsFeature {
+            path: PathBuf::from("room.toml"),
+            key: "spheres[0].material".into(),
+            what: "scene-part-mirror",
+            remedy: remedy(Made::Features, 2, 1),
+        };
+        assert_eq!(
+            error.to_string(),
+            "room.toml: key `spheres[0].material`: a mirror material needs feature s2: \
+             cargo run --features s2 -- ..."
+        );
+        assert_eq!(
+            error.say(Language::French),
+            "room.toml: clé `spheres[0].material`\u{a0}: un matériau miroir demande la \
+             fonctionnalité s2\u{a0}: cargo run --features s2 -- ..."
+        );
     }
 }
