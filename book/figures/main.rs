@@ -417,3 +417,23 @@ mod epsilon {
         vec![row(true, "fixed"), row(false, "bound")]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A label in each edition's language, its number written by the catalogue:
+    /// a point and no grouping in English, a decimal comma and thousands in French.
+    #[test]
+    fn labels_are_the_catalogue_s_in_each_language() {
+        let cost = Said::new("figure-cost")
+            .with("search", "brute-force")
+            .with("mean", 5863.0);
+        let english = cost.say_from(&catalogue(Language::English));
+        assert_eq!(english, "brute force: 5863.0 tests a ray");
+        let french = cost.say_from(&catalogue(Language::French));
+        assert_eq!(french, "force brute\u{a0}: 5\u{202f}863,0 tests");
+        let two = Said::new("figure-bounces").with("bounces", 2u64);
+        assert_eq!(two.say_from(&catalogue(Language::French)), "2 rebonds");
+    }
+}
