@@ -5,7 +5,7 @@
 command-error = error: { $why }
 
 ## The closing line: `camera: 512x512, 50 spp, ... -> out/camera.png`.
-render-done = { $label }: { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3, useGrouping: "false") } s, { NUMBER($rays, useGrouping: "false") } rays, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: "false") } Mrays/s, { NUMBER($threads, useGrouping: "false") } threads{ $adaptive }{ NUMBER($dropped, useGrouping: "false") } -> { $out }
+render-done = { $label }: { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3, useGrouping: "false") } s, { NUMBER($rays, useGrouping: "false") } rays, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: "false") } Mrays/s, { NUMBER($threads, useGrouping: "false") } threads{ $adaptive }{ $dropped } -> { $out }
 render-adaptive = , { NUMBER($average, minimumFractionDigits: 1, maximumFractionDigits: 1, useGrouping: "false") } spp on average
 render-dropped = , { NUMBER($dropped, useGrouping: "false") } non-finite samples dropped
 
@@ -21,3 +21,9 @@ summary-russian-roulette = , Russian roulette
 render-aov-done = { $label }: { $aov } image{ $range }{ $mean } -> { $out }
 render-aov-range = , from { $low } (purple) to { $high } (yellow)
 render-aov-mean = , mean cost { $mean } tests a ray
+render-cost-not-fast = { $label }: `--aov cost` counts the tests of the course's searches, which the fast engine does not run: leave out `--fast` (or `fast = true` in the scene file)
+
+## `raycourse animate`: each frame's label and time, and the closing line.
+animate-frame-label = { $name } frame { NUMBER($frame, useGrouping: "false") }/{ NUMBER($frames, useGrouping: "false") }
+animate-frame = { $label }: { NUMBER($seconds, minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: "false") } s
+animate-done = { $name }: { NUMBER($frames, useGrouping: "false") } frames, plunge { $from } to { $to } degrees, { NUMBER($seconds, minimumFractionDigits: 1, maximumFractionDigits: 1, useGrouping: "false") } s -> { $out }

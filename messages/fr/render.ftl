@@ -5,10 +5,10 @@
 command-error = erreur : { $why }
 
 ## La ligne de fin : `camera : 512 × 512, 50 échantillons par pixel, ... -> out/camera.png`.
-render-done = { $label } : { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3) } s, { NUMBER($rays) } { $rays ->
+render-done = { $label } : { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3) } s, { NUMBER($rays) } { $rays ->
         [one] rayon
        *[other] rayons
-    }, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2) } Mrayons/s, { $threads } { $threads ->
+    }, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2) } Mrayons/s, { $threads } { $threads ->
         [one] fil d'exécution
        *[other] fils d'exécution
     }{ $adaptive }{ $dropped } -> { $out }
@@ -42,3 +42,12 @@ render-aov-done = { $label } : image { $aov ->
     }{ $range }{ $mean } -> { $out }
 render-aov-range = , de { $low } (violet) à { $high } (jaune)
 render-aov-mean = , coût moyen de { $mean } tests par rayon
+render-cost-not-fast = { $label } : `--aov cost` compte les tests des recherches du cours, que le moteur rapide ne fait pas : retirez `--fast` (ou `fast = true` du fichier de scène)
+
+## `raycourse animate` : l'étiquette et le temps de chaque image, et la ligne de fin.
+animate-frame-label = { $name } image { $frame }/{ $frames }
+animate-frame = { $label } : { NUMBER($seconds, minimumFractionDigits: 2, maximumFractionDigits: 2) } s
+animate-done = { $name } : { $frames } { $frames ->
+        [one] image
+       *[other] images
+    }, plongée de { $from } à { $to } degrés, { NUMBER($seconds, minimumFractionDigits: 1, maximumFractionDigits: 1) } s -> { $out }

@@ -109,7 +109,7 @@ pub fn render_to_file(
     let scene = &job.scene;
     if let Some(aov) = options.aov {
         #[cfg(feature = "beyond")]
-        refuse_cost_of_fast(label, aov, &job.beyond)?;
+        refuse_cost_of_fast(label, aov, &job.beyond, options.language())?;
         let name = format!("{label}-{}.png", aov.name());
         let out = options
             .out
@@ -160,7 +160,7 @@ fn closing_line(label: &str, job: &Job, timed: &Timed, out: &Path, language: Lan
     say(language, "render-done", &arguments)
 }
 
-/// Refuses `--aov cost` with the fast engine: the image counts the tests of the
+/// Refuses `--aov cost` with the fast engine, in `language`: the image counts the tests of the
 /// course's searches, and the fast engine's own searches (its hierarchy, session
 /// 5's triangles on lanes) count none, so its mean would be the spheres' alone.
 #[cfg(feature = "beyond")]
@@ -168,12 +168,11 @@ fn refuse_cost_of_fast(
     label: &str,
     aov: Aov,
     beyond: &raycourse::scene::beyond::Beyond,
+    language: Language,
 ) -> Result<(), Failure> {
     if aov == Aov::Cost && beyond.fast {
-        return Err(Failure::Input(format!(
-            "{label}: `--aov cost` counts the tests of the course's searches, which the fast \
-             engine does not run: leave out `--fast` (or `fast = true` in the scene file)"
-        )));
+        let why = say(language, "render-cost-not-fast", &[("label", label.into())]);
+        return Err(Failure::Input(why));
     }
     Ok(())
 }

@@ -86,15 +86,46 @@ fn a_french_render_closes_with_a_french_line() {
     let start = format!("white-disk{NBSP}: 32{NBSP}×{NBSP}24, 1 échantillon par pixel, ");
     assert!(line.starts_with(&start), "{line}");
     assert!(
-        line.contains(" 768 rayons, ") && line.contains(" Mrayons/s, "),
+        line.contains(" 768 rayons, ") && line.contains(&format!("{NBSP}Mrayons/s, ")),
         "{line}"
     );
-    assert!(
-        line.contains(" s, ") && line.trim_end().ends_with("-> disk.png"),
-        "{line}"
-    );
-    let seconds = line.split(", ").find(|p| p.ends_with(" s")).unwrap();
+    assert!(line.trim_end().ends_with("-> disk.png"), "{line}");
+    let seconds = line.split(", ").find(|p| p.ends_with(&format!("{NBSP}s")));
+    let seconds = seconds.unwrap_or_else(|| panic!("no seconds: {line}"));
     assert!(seconds.contains(','), "a decimal comma: {line}");
+}
+
+/// The English closing line is the one the README quotes, word for word: only
+/// the time, the speed and the threads change from one run to the next.
+#[test]
+fn an_english_render_closes_with_the_readme_s_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["s1", "white-disk", "--width", "32", "--height", "24"];
+    let out = run(
+        &[&args[..], &["--out", "disk.png", "-q"]].concat(),
+        dir.path(),
+    );
+    let line = text(&out.stdout);
+    let parts: Vec<&str> = line.trim_end().split(", ").collect();
+    let [settings, spp, bounces, seconds, rays, speed, threads] = parts[..] else {
+        panic!("seven parts: {line}");
+    };
+    assert_eq!(
+        [settings, spp, bounces],
+        ["white-disk: 32x24", "1 spp", "5 bounces"]
+    );
+    assert_eq!(rays, "768 rays");
+    let number = |text: &str, unit: &str| {
+        let figure = text
+            .strip_suffix(unit)
+            .unwrap_or_else(|| panic!("{text}: {line}"));
+        assert!(figure.parse::<f64>().is_ok(), "{text}: {line}");
+        figure.split_once('.').map_or(0, |(_, d)| d.len())
+    };
+    assert_eq!(number(seconds, " s"), 3);
+    assert_eq!(number(speed, " Mrays/s"), 2);
+    let threads = threads.strip_suffix(" threads -> disk.png").expect(&line);
+    assert!(threads.parse::<u32>().is_ok(), "{line}");
 }
 
 #[test]
@@ -132,4 +163,20 @@ fn an_image_of_what_the_renderer_sees_closes_in_french() {
         english.starts_with("white-disk: depth image, from "),
         "{english}"
     );
+}
+
+/// `animate` is a render command: `--lang fr` gives its closing line in French.
+#[cfg(feature = "s7")]
+#[test]
+fn an_animation_closes_in_french() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = [
+        "animate", "camera", "--frames", "2", "--width", "8", "--height", "8",
+    ];
+    let options = ["--spp", "1", "-q", "--lang", "fr"];
+    let out = run(&[&args[..], &options].concat(), dir.path());
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let line = text(&out.stdout);
+    let start = format!("camera{NBSP}: 2 images, plongée de 0 à 30{NBSP}degrés, ");
+    assert!(line.starts_with(&start), "{line}");
 }
