@@ -36,8 +36,10 @@ probe-bounces-left = {"           "}bounces still allowed: { NUMBER($left, useGr
 probe-weight = {"           "}weight { $weight }
 probe-triple = ({ $x }, { $y }, { $z })
 
-## The names the renderer gives a light and a shape (`--json` keeps them).
+## A number in scientific notation, its mantissa as the language writes it.
 probe-number = { $value }
+
+## The names the renderer gives a light and a shape (`--json` keeps them).
 probe-light-no-light = no light
 probe-light-point-light = point light
 probe-light-sphere-light = sphere light

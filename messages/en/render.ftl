@@ -1,6 +1,7 @@
-### What a render says when it is done (`raycourse render`, the `sN` commands): its
-### closing line, with the scene's settings in a few words; and the line of a command
-### that fails. The README quotes the English closing line: keep it as it is.
+### What a render says when it is done (`raycourse render`, the `sN` commands,
+### `animate`): its closing line, with the scene's settings in a few words; and the
+### line of a command that fails. The README quotes the English closing line: keep
+### it as it is.
 
 command-error = error: { $why }
 

@@ -36,8 +36,10 @@ probe-bounces-left = {"           "}rebonds encore permis : { $left }
 probe-weight = {"           "}poids { $weight }
 probe-triple = ({ $x } ; { $y } ; { $z })
 
-## Les noms que le moteur donne à une source et à une forme (`--json` les garde).
+## Un nombre en notation scientifique, sa mantisse comme l'écrit la langue.
 probe-number = { $value }
+
+## Les noms que le moteur donne à une source et à une forme (`--json` les garde).
 probe-light-no-light = pas de source
 probe-light-point-light = source ponctuelle
 probe-light-sphere-light = source sphérique

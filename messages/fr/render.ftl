@@ -1,4 +1,4 @@
-### Ce que dit un rendu terminé (`raycourse render`, les commandes `sN`) : sa ligne
+### Ce que dit un rendu terminé (`raycourse render`, les commandes `sN`, `animate`) : sa ligne
 ### de fin, avec les réglages de la scène en quelques mots ; et la ligne d'une
 ### commande qui échoue.
 
