@@ -5,6 +5,13 @@
 
 command-error = error: { $why }
 
+## Why a render command could not go on: its threads, the file it writes.
+command-too-many-threads = --threads { NUMBER($threads, useGrouping: "false") }: at most { NUMBER($most, useGrouping: "false") } (one per core is the fastest)
+command-cannot-start-threads = cannot start { NUMBER($threads, useGrouping: "false") } worker threads: { $why }
+command-cannot-write = { $file }: cannot write the file: { $why }
+command-not-a-file = { $file }: not a regular file (a folder, a device or a pipe): give the path of a file to write
+command-link-loop = { $file }: a loop of symbolic links
+
 ## The closing line: `camera: 512x512, 50 spp, ... -> out/camera.png`.
 render-done = { $label }: { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3, useGrouping: "false") } s, { NUMBER($rays, useGrouping: "false") } rays, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: "false") } Mrays/s, { NUMBER($threads, useGrouping: "false") } threads{ $adaptive }{ $dropped } -> { $out }
 render-adaptive = , { NUMBER($average, minimumFractionDigits: 1, maximumFractionDigits: 1, useGrouping: "false") } spp on average

@@ -4,6 +4,16 @@
 
 command-error = erreur : { $why }
 
+## Pourquoi une commande de rendu ne peut pas continuer : ses fils d'exécution, le fichier qu'elle écrit.
+command-too-many-threads = --threads { NUMBER($threads, useGrouping: "false") } : { NUMBER($most, useGrouping: "false") } au plus (un par cœur est le plus rapide)
+command-cannot-start-threads = impossible de démarrer { $threads } { $threads ->
+        [one] fil d'exécution
+       *[other] fils d'exécution
+    } : { $why }
+command-cannot-write = { $file }: impossible d'écrire le fichier : { $why }
+command-not-a-file = { $file }: pas un fichier ordinaire (un dossier, un périphérique ou un tube) : donnez le chemin d'un fichier à écrire
+command-link-loop = { $file }: une boucle de liens symboliques
+
 ## La ligne de fin : `camera : 512 × 512, 50 échantillons par pixel, ... -> out/camera.png`.
 render-done = { $label } : { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3) } s, { NUMBER($rays) } { $rays ->
         [one] rayon

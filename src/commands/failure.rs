@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
 use raycourse::messages::say;
 
 /// Why a command failed: its input (exit code 2, as for clap's usage errors), the
@@ -20,6 +21,14 @@ pub enum Failure {
     /// Something the machine could not do: start threads, write a file.
     #[error("{0}")]
     Machine(String),
+    /// A bad input, said in the reader's language when shown: a message of the
+    /// catalogue with its arguments.
+    #[error("{0}")]
+    Refused(Said),
+    /// Something the machine could not do, said in the reader's language when
+    /// shown.
+    #[error("{0}")]
+    Broke(Said),
     /// A checked image that differs from the stage's; the report printed before
     /// says how, so the message is empty.
     #[allow(
@@ -38,18 +47,22 @@ impl Failure {
 
     /// The file at `path` that could not be written.
     pub fn write(path: &Path, error: std::io::Error) -> Failure {
-        Failure::Machine(format!(
-            "{}: cannot write the file: {error}",
-            path.display()
-        ))
+        let said = Said::new("command-cannot-write")
+            .with("file", path.display().to_string())
+            .with("why", error.to_string());
+        Failure::Broke(said)
     }
 
     /// The exit code: 2 for bad input, 1 for a failure of the machine or an image
     /// that differs.
     pub fn exit_code(&self) -> std::process::ExitCode {
         match self {
-            Failure::Input(_) | Failure::Scene(_) => std::process::ExitCode::from(2),
-            Failure::Machine(_) | Failure::Differs => std::process::ExitCode::FAILURE,
+            Failure::Input(_) | Failure::Scene(_) | Failure::Refused(_) => {
+                std::process::ExitCode::from(2)
+            }
+            Failure::Machine(_) | Failure::Broke(_) | Failure::Differs => {
+                std::process::ExitCode::FAILURE
+            }
         }
     }
 
@@ -57,6 +70,7 @@ impl Failure {
     pub fn said(&self, language: Language) -> String {
         let why = match self {
             Failure::Scene(error) => error.say(language),
+            Failure::Refused(said) | Failure::Broke(said) => said.say(language),
             other => other.to_string(),
         };
         say(language, "command-error", &[("why", why.into())])

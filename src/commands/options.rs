@@ -7,6 +7,7 @@ use clap::Args;
 use raycourse::Overrides;
 use raycourse::inspect::aov::Aov;
 use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
 
 use crate::commands::failure::Failure;
 
@@ -134,12 +135,18 @@ pub const MOST_THREADS: usize = 1024;
 pub fn thread_pool(threads: Option<NonZeroUsize>) -> Result<rayon::ThreadPool, Failure> {
     let threads = threads.map_or(0, NonZeroUsize::get);
     if threads > MOST_THREADS {
-        return Err(Failure::Input(format!(
-            "--threads {threads}: at most {MOST_THREADS} (one per core is the fastest)"
-        )));
+        let said = Said::new("command-too-many-threads")
+            .with("threads", threads as u64)
+            .with("most", MOST_THREADS as u64);
+        return Err(Failure::Refused(said));
     }
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
-        .map_err(|e| Failure::Machine(format!("cannot start {threads} worker threads: {e}")))
+        .map_err(|e| {
+            let said = Said::new("command-cannot-start-threads")
+                .with("threads", threads as u64)
+                .with("why", e.to_string());
+            Failure::Broke(said)
+        })
 }

@@ -9,6 +9,7 @@ use raycourse::inspect::aov::{Aov, see};
 use raycourse::inspect::false_colour::label as label_of;
 use raycourse::messages::catalogue::decimals;
 use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
 use raycourse::messages::{Argument, say};
 use raycourse::render::png::encode_rgb8;
 use raycourse::{Render, Scene, encode_png};
@@ -84,18 +85,17 @@ fn through_links(path: &Path) -> Result<PathBuf, Failure> {
             return Ok(target);
         }
         if !metadata.file_type().is_symlink() {
-            return Err(Failure::Input(format!(
-                "{}: not a regular file (a folder, a device or a pipe): give the path of a file to write",
-                path.display()
-            )));
+            return Err(refused_path("command-not-a-file", path));
         }
         let link = std::fs::read_link(&target).map_err(|e| Failure::write(path, e))?;
         target = target.parent().unwrap_or(Path::new("")).join(link);
     }
-    Err(Failure::Input(format!(
-        "{}: a loop of symbolic links",
-        path.display()
-    )))
+    Err(refused_path("command-link-loop", path))
+}
+
+/// The bad input of the message `id` about the file at `path`.
+fn refused_path(id: &'static str, path: &Path) -> Failure {
+    Failure::Refused(Said::new(id).with("file", path.display().to_string()))
 }
 
 /// Renders `job` into a PNG (`options.out`, or `default_out`) and prints the

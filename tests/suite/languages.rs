@@ -180,3 +180,16 @@ fn an_animation_closes_in_french() {
     let start = format!("camera{NBSP}: 2 images, plongée de 0 à 30{NBSP}degrés, ");
     assert!(line.starts_with(&start), "{line}");
 }
+
+/// What a render command refuses before it renders is said in French too.
+#[test]
+fn too_many_threads_are_refused_in_french() {
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["s1", "shading", "--threads", "100000", "-q", "--lang", "fr"];
+    let out = run(&args, dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let expected = format!(
+        "erreur{NBSP}: --threads 100000{NBSP}: 1024 au plus (un par cœur est le plus rapide)\n"
+    );
+    assert_eq!(text(&out.stderr), expected);
+}
