@@ -54,3 +54,5 @@ probe-scene-and-stage = with --scene, give only X Y
 probe-give-stage = give STAGE X Y (or --scene FILE X Y)
 probe-beyond-the-course = the probe follows the course's code; this scene asks for { $what }
 probe-not-a-coordinate = `{ $text }` is not a pixel coordinate (0, 1, 2, ...)
+probe-cannot-write-json = cannot write the probe as JSON: { $why }
+probe-cannot-write-output = cannot write to the standard output: { $why }

@@ -54,3 +54,5 @@ probe-scene-and-stage = avec --scene, donnez seulement X Y
 probe-give-stage = donnez ÉTAPE X Y (ou --scene FICHIER X Y)
 probe-beyond-the-course = la sonde suit le code du cours ; cette scène demande { $what }
 probe-not-a-coordinate = `{ $text }` n'est pas une coordonnée de pixel (0, 1, 2…)
+probe-cannot-write-json = impossible d'écrire la sonde en JSON : { $why }
+probe-cannot-write-output = impossible d'écrire sur la sortie standard : { $why }

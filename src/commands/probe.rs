@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use clap::{ArgMatches, FromArgMatches, Parser};
 use raycourse::inspect::probe::probe;
 use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
 use raycourse::messages::{Argument, say};
 use raycourse::stages;
 
@@ -87,19 +88,23 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let found =
         probe(&job.scene, x?, y?, args.sample).map_err(|e| Failure::Input(e.say(language)))?;
     let text = if args.json {
-        serde_json::to_string_pretty(&found)
-            .map_err(|e| Failure::Machine(format!("cannot write the probe as JSON: {e}")))?
+        serde_json::to_string_pretty(&found).map_err(|e| broke("probe-cannot-write-json", e))?
             + "\n"
     } else {
         found.text(language)
     };
     // A reader that stops early (`| head`) is not a failure.
     match std::io::stdout().write_all(text.as_bytes()) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Failure::Machine(format!(
-            "cannot write to the standard output: {e}"
-        ))),
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(broke("probe-cannot-write-output", e))
+        }
         _ => Ok(()),
     }
+}
+
+/// The failure of the machine the message `id` names, `error` saying why.
+fn broke(id: &'static str, error: impl std::fmt::Display) -> Failure {
+    Failure::Broke(Said::new(id).with("why", error.to_string()))
 }
 
 /// A pixel coordinate: a whole number from 0; refused in `language` otherwise.
