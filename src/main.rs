@@ -10,6 +10,7 @@ mod commands;
 use std::process::ExitCode;
 
 use clap::{ArgMatches, Args, FromArgMatches};
+use raycourse::messages::language::Language;
 use raycourse::scene_file::SESSION;
 use raycourse::stages;
 
@@ -52,6 +53,14 @@ fn dispatch(verbs: &[Verb], matches: &ArgMatches) -> Result<(), Failure> {
     (verb.run)(arguments)
 }
 
+/// The language of the command's messages: its `--lang`, for a command that has
+/// one (`render`, `sN`, `probe`, `check`), otherwise the environment's.
+fn language(matches: &ArgMatches) -> Language {
+    let command = matches.subcommand().map_or(matches, |(_, m)| m);
+    let lang = command.try_get_one::<String>("lang").ok().flatten();
+    lang.map_or_else(Language::from_environment, |l| Language::from_locale(l))
+}
+
 fn main() -> ExitCode {
     let verbs = verbs();
     let matches = command(&verbs).get_matches();
@@ -63,7 +72,7 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::Differs) => Failure::Differs.exit_code(),
         Err(failure) => {
-            eprintln!("error: {failure}");
+            eprintln!("{}", failure.said(language(&matches)));
             failure.exit_code()
         }
     }

@@ -33,7 +33,9 @@ use raycourse::inspect::aov::{Aov, see};
 use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::maths::{Colour, Real, Vec3};
+use raycourse::messages::catalogue::{Catalogue, files};
 use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
 use raycourse::render::film::display;
 use raycourse::studies::scale::scaled;
 use raycourse::{Overrides, Scene, encode_png, find_stage, parse_scene, render};
@@ -58,38 +60,44 @@ fn render_stage(session: u32, name: &str, size: u32, edit: &dyn Fn(&str) -> Stri
     image::load_from_memory(&png).expect("a PNG").to_rgb8()
 }
 
-/// A panel's label in the book's two editions.
-struct Label {
-    /// The English edition's label.
-    english: String,
-    /// The French edition's label.
-    french: String,
+/// A panel's label: a message of the book's catalogue (`messages/*/book.ftl`),
+/// said in each edition's language.
+type Label = Said;
+
+/// The label of the message `id`, without arguments.
+fn say(id: &'static str) -> Label {
+    Said::new(id)
 }
 
-/// The label `english` in the English edition and `french` in the French one.
-fn say(english: &str, french: &str) -> Label {
-    Label {
-        english: english.to_owned(),
-        french: french.to_owned(),
-    }
-}
+/// The book's own messages, beside the library's: `messages/<code>/book.ftl`.
+const BOOK: [(Language, &str); 2] = [
+    (
+        Language::English,
+        include_str!("../../messages/en/book.ftl"),
+    ),
+    (Language::French, include_str!("../../messages/fr/book.ftl")),
+];
 
-impl Label {
-    /// This label in `language`.
-    fn in_language(&self, language: Language) -> &str {
-        language.pick(&self.english, &self.french)
-    }
+/// The catalogue of `language`: the library's files and the book's.
+fn catalogue(language: Language) -> Catalogue {
+    let mut all = files(language).to_vec();
+    all.extend(
+        BOOK.iter()
+            .filter(|(l, _)| *l == language)
+            .map(|(_, text)| ("book.ftl", *text)),
+    );
+    Catalogue::new(language, &all)
 }
 
 /// A figure: rows of labelled panels, the rows one above the other.
 type Figure = Vec<Vec<(Label, RgbImage)>>;
 
-/// `figure` with its labels in `language`: each row's panels side by
+/// `figure` with its labels from `catalogue`: each row's panels side by
 /// side, each under its label, with a white gap between them.
-fn compose(figure: &Figure, language: Language) -> RgbImage {
+fn compose(figure: &Figure, catalogue: &Catalogue) -> RgbImage {
     let rows: Vec<RgbImage> = figure
         .iter()
-        .map(|row| side_by_side(row, language))
+        .map(|row| side_by_side(row, catalogue))
         .collect();
     let mut out = RgbImage::from_pixel(
         rows[0].width(),
@@ -104,9 +112,9 @@ fn compose(figure: &Figure, language: Language) -> RgbImage {
     out
 }
 
-/// `panels` side by side, each under its label in `language`, with a
+/// `panels` side by side, each under its label from `catalogue`, with a
 /// white gap between them.
-fn side_by_side(panels: &[(Label, RgbImage)], language: Language) -> RgbImage {
+fn side_by_side(panels: &[(Label, RgbImage)], catalogue: &Catalogue) -> RgbImage {
     let (w, h) = panels[0].1.dimensions();
     let gap = 8;
     let width = panels.len() as u32 * (w + gap) - gap;
@@ -119,17 +127,17 @@ fn side_by_side(panels: &[(Label, RgbImage)], language: Language) -> RgbImage {
             i64::from(BAND),
         );
     }
-    let labels: Vec<(&str, u32)> = panels
+    let labels: Vec<(String, u32)> = panels
         .iter()
         .enumerate()
-        .map(|(k, (label, _))| (label.in_language(language), k as u32 * (w + gap)))
+        .map(|(k, (label, _))| (label.say_from(catalogue), k as u32 * (w + gap)))
         .collect();
     label(&mut out, &labels);
     out
 }
 
 /// Writes each `(text, x)` of `labels` in the band at the top of `image`.
-fn label(image: &mut RgbImage, labels: &[(&str, u32)]) {
+fn label(image: &mut RgbImage, labels: &[(String, u32)]) {
     plotters::style::register_font("sans-serif", FontStyle::Normal, FONT)
         .unwrap_or_else(|_| panic!("the built-in font is a valid TrueType font"));
     let (w, h) = image.dimensions();
@@ -160,11 +168,11 @@ fn antialiasing(figures: &Path) -> Figure {
     let corner = (300, 190);
     vec![vec![
         (
-            say("without antialiasing", "sans antialiasing"),
+            say("figure-without-antialiasing"),
             magnified(&open("indirect.png"), corner, 64, 4),
         ),
         (
-            say("with antialiasing", "avec antialiasing"),
+            say("figure-with-antialiasing"),
             magnified(&open("antialiasing.png"), corner, 64, 4),
         ),
     ]]
@@ -176,10 +184,13 @@ fn glass_shadow() -> Figure {
     let off = |text: &str| text.replace("shadows = true", "shadows = false");
     vec![vec![
         (
-            say("with shadow rays", "avec rayons d'ombre"),
+            say("figure-with-shadow-rays"),
             render_stage(2, "glass", 256, &same),
         ),
-        (say("without", "sans"), render_stage(2, "glass", 256, &off)),
+        (
+            say("figure-without-shadow-rays"),
+            render_stage(2, "glass", 256, &off),
+        ),
     ]]
 }
 
@@ -193,11 +204,11 @@ fn smooth_normals() -> Figure {
     let head = (96, 64);
     vec![vec![
         (
-            say("flat normals", "normales plates"),
+            say("figure-flat-normals"),
             magnified(&render_stage(6, "bvh", 320, &dim), head, 128, 2),
         ),
         (
-            say("smooth normals", "normales lissées"),
+            say("figure-smooth-normals"),
             magnified(&render_stage(6, "smooth-normals", 320, &dim), head, 128, 2),
         ),
     ]]
@@ -210,15 +221,15 @@ fn roulette() -> Figure {
     let same = |text: &str| text.to_owned();
     vec![vec![
         (
-            say("2 bounces", "2 rebonds"),
+            Said::new("figure-bounces").with("bounces", 2u64),
             render_stage(4, "russian-roulette", 192, &limit),
         ),
         (
-            say("2 bounces + roulette", "2 rebonds + roulette"),
+            Said::new("figure-bounces-and-roulette").with("bounces", 2u64),
             render_stage(4, "russian-roulette", 192, &same),
         ),
         (
-            say("5 bounces", "5 rebonds"),
+            Said::new("figure-bounces").with("bounces", 5u64),
             render_stage(4, "russian-roulette", 192, &deep),
         ),
     ]]
@@ -248,11 +259,11 @@ fn texture_gamma(scratch: &Path) -> Figure {
     let body = (72, 72);
     vec![vec![
         (
-            say("converted to linear", "convertie en linéaire"),
+            say("figure-converted-to-linear"),
             magnified(&render_stage(7, "textures", 320, &same), body, 160, 2),
         ),
         (
-            say("used as it is", "utilisée telle quelle"),
+            say("figure-used-as-it-is"),
             magnified(&render_stage(7, "textures", 320, &wrong), body, 160, 2),
         ),
     ]]
@@ -282,7 +293,7 @@ fn main() {
             (Language::English, out.clone()),
             (Language::French, out.join("fr")),
         ] {
-            let image = compose(&figure, language);
+            let image = compose(&figure, &catalogue(language));
             let png =
                 raycourse::render::png::encode_rgb8(image.as_raw(), image.width(), image.height());
             std::fs::write(folder.join(name), png).expect("figure written");
@@ -296,9 +307,9 @@ fn main() {
 /// mean: the tests a camera ray takes, from brute force to the BVH.
 fn cost() -> Figure {
     let panels = [
-        (5, "mesh", say("brute force", "force brute")),
-        (5, "mesh-bbox", say("box", "boîte")),
-        (6, "bvh", say("BVH", "BVH")),
+        (5, "mesh", "brute-force"),
+        (5, "mesh-bbox", "box"),
+        (6, "bvh", "bvh"),
     ]
     .into_iter()
     .map(|(session, name, search)| {
@@ -312,30 +323,15 @@ fn cost() -> Figure {
         let seen = see(&scene, Aov::Cost);
         let mean = seen.mean.expect("every ray costs something");
         let image = RgbImage::from_raw(seen.width, seen.height, seen.rgb).expect("the size");
-        let label = Label {
-            english: format!("{}: {mean:.1} tests a ray", search.english),
-            french: format!("{}\u{a0}: {} tests", search.french, french_number(mean)),
-        };
+        // The mean's one decimal as Rust rounds it; the catalogue writes it.
+        let mean: f64 = format!("{mean:.1}").parse().expect("a number");
+        let label = Said::new("figure-cost")
+            .with("search", search)
+            .with("mean", mean);
         (label, image)
     })
     .collect();
     vec![panels]
-}
-
-/// `x` with one decimal as French writes it: a decimal comma, and a non-breaking
-/// space between groups of three digits (`5 863,0`).
-fn french_number(x: Real) -> String {
-    let text = format!("{x:.1}");
-    let (whole, decimal) = text.split_once('.').expect("one decimal");
-    let digits: Vec<char> = whole.chars().collect();
-    let mut grouped = String::new();
-    for (k, digit) in digits.iter().enumerate() {
-        if k > 0 && (digits.len() - k).is_multiple_of(3) {
-            grouped.push('\u{a0}');
-        }
-        grouped.push(*digit);
-    }
-    format!("{grouped},{decimal}")
 }
 
 /// A fresh scratch folder.
@@ -407,22 +403,18 @@ mod epsilon {
 
     /// The two rows, one above the other.
     pub fn figure() -> Figure {
-        let row = |fixed: bool, name: Label| {
+        let row = |fixed: bool, offset: &'static str| {
             SCALES
                 .iter()
                 .map(|(scale, text)| {
-                    let label = Label {
-                        english: format!("{}, scale {text}", name.english),
-                        french: format!("{}, {text}", name.french),
-                    };
+                    let label = Said::new("figure-at-scale")
+                        .with("offset", offset)
+                        .with("scale", *text);
                     (label, tile(*scale, fixed))
                 })
                 .collect()
         };
-        vec![
-            row(true, say("fixed epsilon", "epsilon fixe")),
-            row(false, say("error bound", "borne d'erreur")),
-        ]
+        vec![row(true, "fixed"), row(false, "bound")]
     }
 }
 
@@ -430,20 +422,18 @@ mod epsilon {
 mod tests {
     use super::*;
 
-    /// Groups of three digits from the right, split by non-breaking spaces, and a
-    /// decimal comma: the thousands at every size, and none below them.
+    /// A label in each edition's language, its number written by the catalogue:
+    /// a point and no grouping in English, a decimal comma and thousands in French.
     #[test]
-    fn numbers_are_written_the_french_way() {
-        let cases = [
-            (0.54, "0,5"),
-            (12.6, "12,6"),
-            (999.94, "999,9"),
-            (1180.8, "1\u{a0}180,8"),
-            (5863.0, "5\u{a0}863,0"),
-            (1_234_567.0, "1\u{a0}234\u{a0}567,0"),
-        ];
-        for (x, french) in cases {
-            assert_eq!(french_number(x), french, "{x}");
-        }
+    fn labels_are_the_catalogue_s_in_each_language() {
+        let cost = Said::new("figure-cost")
+            .with("search", "brute-force")
+            .with("mean", 5863.0);
+        let english = cost.say_from(&catalogue(Language::English));
+        assert_eq!(english, "brute force: 5863.0 tests a ray");
+        let french = cost.say_from(&catalogue(Language::French));
+        assert_eq!(french, "force brute\u{a0}: 5\u{202f}863,0 tests");
+        let two = Said::new("figure-bounces").with("bounces", 2u64);
+        assert_eq!(two.say_from(&catalogue(Language::French)), "2 rebonds");
     }
 }

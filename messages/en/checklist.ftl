@@ -528,3 +528,69 @@ s7-case-between-the-two-top-texels = between the two top texels
 ## A texture's filter, as a lookup's failure names it.
 checklist-filter-nearest = nearest
 checklist-filter-bilinear = bilinear
+
+## rules
+
+# The rule each of the checklist's mistakes breaks, in words its failure must hold
+# (tests/exercises/mistakes/): the same words as the generated check's message.
+rule-s1-1-an-integer-division-drops-the = an integer division drops the half
+rule-s1-1-rows-count-from-the-top = rows count from the top of the image
+rule-s1-1-h-2-tan-alpha = H / (2 tan alpha)
+rule-s1-2-yours-is-where-it-leaves = yours is where it leaves
+rule-s1-2-only-t-0-is-a = only t > 0 is a hit
+rule-s1-2-t-0-is-its-own = t = 0 is its own start
+rule-s1-2-but-the-far-root-s = but the far root -s.d + sqrt(Delta) is a hit
+rule-s1-2-loses-r-2-in-the = loses R^2 in the rounding of |s|^2
+rule-s1-3-the-first-of-the-list = the first of the list wins
+rule-s1-3-the-smallest-t-of-all = the smallest t of all the spheres met
+rule-s1-4-the-1-pi-is-missing = the 1/pi is missing
+rule-s1-4-it-gets-no-light-max = it gets no light, max(0, <N, l>)
+rule-s1-4-not-p-light-p-light = not P_light / |P_light|
+rule-s1-4-l-is-the-unit-vector = l is the unit vector to the light
+rule-s2-1-rounded-to-the-nearest-not = rounded to the nearest, not down
+rule-s2-1-use-the-gamma-given = use the gamma given
+rule-s2-1-an-infinite-radiance-is-the = an infinite radiance is the brightest there is
+rule-s2-2-not-a-fixed-epsilon = not a fixed epsilon
+rule-s2-2-here-inwards-n = here inwards (-N)
+rule-s2-2-not-against-n = not against N
+rule-s2-3-not-from-the-hit-point = not from the hit point
+rule-s2-3-divide-the-vector-to-the = divide the vector to the light by its length
+rule-s2-4-subtracted-twice-it-turns-around = subtracted twice, it turns around
+rule-s2-4-even-a-grazing-one = even a grazing one
+rule-s2-5-eta-is-n1-n2 = eta is n1 / n2
+rule-s2-5-total-internal-reflection-eta-2 = total internal reflection: eta^2
+rule-s2-5-1-the-ray-refracts = <= 1: the ray refracts
+rule-s3-1-0-included = 0 included
+rule-s3-2-the-frame-is-left-handed = the frame is left-handed
+rule-s3-2-near-n-z-1-n = near N = -z, 1 + n_z
+rule-s3-3-hit-spawn-direction = hit.spawn(direction)
+rule-s3-4-with-the-sigma-given = with the sigma given
+rule-s4-1-sin-2-theta-1-cos = sin^2(theta) = (1 - cos)(1 + cos)
+rule-s4-2-use-the-cone-s-one = use the cone's one_minus_cos_max
+rule-s4-3-not-spread-as-the-density = not spread as the density says
+rule-s4-4-starts-at-the-eye-start = starts at the eye, start
+rule-s4-4-starts-in-the-eye-s = starts in the eye's plane
+rule-s5-1-only-det-0-means-parallel = only det = 0 means parallel
+rule-s5-1-only-t-0-decides = only t > 0 decides
+rule-s5-1-edges-belong-to-the-triangle = edges belong to the triangle
+rule-s5-2-miss-only-when-near-far = miss only when near > far
+rule-s6-1-whatever-the-box-s-size = whatever the box's size
+rule-s6-1-the-box-is-cut-across = the box is cut across its longest side
+rule-s6-2-closer-than-t-max = closer than t_max
+rule-s6-2-goes-on-with-the-rest = goes on with the rest of the stack
+rule-s6-3-weight-k-goes-with-corner = weight k goes with corner k
+rule-s6-3-the-vertex-the-triangle-names = the vertex the triangle names
+rule-s6-3-falls-back-to-the-geometric = falls back to the geometric normal
+rule-s6-3-normalise-it = normalise it
+rule-s6-3-turned-to-the-geometric-normal = turned to the geometric normal's side
+rule-s7-1-y-1-v-h-not = y = (1 - v) H, not v H
+rule-s7-1-yours-swaps-u-and-v = yours swaps u and v, or W and H
+rule-s7-1-towards-minus-infinity = towards minus infinity
+rule-s7-1-by-half-a-texel = by half a texel
+rule-s7-2-not-at-the-origin = not at the origin
+rule-s7-2-which-mirrors-the-image = which mirrors the image
+rule-s7-2-back-forward = back = -forward
+rule-s7-2-the-plunge-is-in-degrees = the plunge is in degrees
+rule-s7-2-keeps-its-distance-to-it = keeps its distance to it
+rule-s7-2-right-normalize-forward-x-up = right = normalize(forward x up)
+rule-s7-2-only-a-camera-looking-exactly = only a camera looking exactly along up

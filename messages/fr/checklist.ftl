@@ -517,3 +517,69 @@ s7-case-between-the-two-top-texels = entre les deux texels du haut
 
 checklist-filter-nearest = au plus proche
 checklist-filter-bilinear = bilinéaire
+
+## rules
+
+# La règle que chaque erreur de la liste de contrôle enfreint, en mots que son échec doit
+# contenir (tests/exercises/mistakes/) : les mêmes que le message de sa vérification générée.
+rule-s1-1-an-integer-division-drops-the = une division entière perd la moitié
+rule-s1-1-rows-count-from-the-top = les lignes se comptent depuis le haut
+rule-s1-1-h-2-tan-alpha = H / (2 tan alpha)
+rule-s1-2-yours-is-where-it-leaves = la vôtre est où il sort
+rule-s1-2-only-t-0-is-a = seul t > 0 est une intersection
+rule-s1-2-t-0-is-its-own = t = 0 est son propre départ
+rule-s1-2-but-the-far-root-s = mais la racine lointaine -s.d + sqrt(Delta) est une intersection
+rule-s1-2-loses-r-2-in-the = perd R^2 dans l'arrondi de |s|^2
+rule-s1-3-the-first-of-the-list = la première de la liste l'emporte
+rule-s1-3-the-smallest-t-of-all = le plus petit t de toutes les sphères
+rule-s1-4-the-1-pi-is-missing = il manque le 1/pi
+rule-s1-4-it-gets-no-light-max = elle ne reçoit rien, max(0, <N, l>)
+rule-s1-4-not-p-light-p-light = et non P_source / |P_source|
+rule-s1-4-l-is-the-unit-vector = l est le vecteur unitaire vers la source
+rule-s2-1-rounded-to-the-nearest-not = arrondi au plus proche, pas par défaut
+rule-s2-1-use-the-gamma-given = utilisez le gamma donné
+rule-s2-1-an-infinite-radiance-is-the = une luminance infinie est la plus claire qui soit
+rule-s2-2-not-a-fixed-epsilon = pas un epsilon fixe
+rule-s2-2-here-inwards-n = ici vers l'intérieur (-N)
+rule-s2-2-not-against-n = pas par rapport à N
+rule-s2-3-not-from-the-hit-point = pas depuis le point d'intersection
+rule-s2-3-divide-the-vector-to-the = divisez le vecteur vers la source par sa longueur
+rule-s2-4-subtracted-twice-it-turns-around = retranchée deux fois, elle se retourne
+rule-s2-4-even-a-grazing-one = même rasant
+rule-s2-5-eta-is-n1-n2 = eta vaut n1 / n2
+rule-s2-5-total-internal-reflection-eta-2 = réflexion totale interne : eta^2
+rule-s2-5-1-the-ray-refracts = <= 1 : le rayon est réfracté
+rule-s3-1-0-included = 0 compris
+rule-s3-2-the-frame-is-left-handed = le repère est indirect
+rule-s3-2-near-n-z-1-n = près de N = -z, 1 + n_z
+rule-s3-3-hit-spawn-direction = hit.spawn(direction)
+rule-s3-4-with-the-sigma-given = avec le sigma donné
+rule-s4-1-sin-2-theta-1-cos = sin^2(theta) = (1 - cos)(1 + cos)
+rule-s4-2-use-the-cone-s-one = utilisez one_minus_cos_max
+rule-s4-3-not-spread-as-the-density = pas répartis comme le dit la densité
+rule-s4-4-starts-at-the-eye-start = part de l'œil, start
+rule-s4-4-starts-in-the-eye-s = part du plan de l'œil
+rule-s5-1-only-det-0-means-parallel = seul det = 0 signifie parallèle
+rule-s5-1-only-t-0-decides = seul t > 0 décide
+rule-s5-1-edges-belong-to-the-triangle = les arêtes appartiennent au triangle
+rule-s5-2-miss-only-when-near-far = ne manquez que si near > far
+rule-s6-1-whatever-the-box-s-size = quelle que soit la taille de la boîte
+rule-s6-1-the-box-is-cut-across = la boîte est coupée en travers de son plus grand côté
+rule-s6-2-closer-than-t-max = plus proches que t_max
+rule-s6-2-goes-on-with-the-rest = continue avec le reste de la pile
+rule-s6-3-weight-k-goes-with-corner = le poids k va avec le sommet k
+rule-s6-3-the-vertex-the-triangle-names = du sommet que nomme le triangle
+rule-s6-3-falls-back-to-the-geometric = se rabat sur la normale géométrique
+rule-s6-3-normalise-it = normalisez-le
+rule-s6-3-turned-to-the-geometric-normal = tournée du côté de la normale géométrique
+rule-s7-1-y-1-v-h-not = y = (1 - v) H, et non v H
+rule-s7-1-yours-swaps-u-and-v = le vôtre échange u et v, ou W et H
+rule-s7-1-towards-minus-infinity = vers moins l'infini
+rule-s7-1-by-half-a-texel = d'un demi-texel
+rule-s7-2-not-at-the-origin = et non l'origine
+rule-s7-2-which-mirrors-the-image = qui renverse l'image en miroir
+rule-s7-2-back-forward = back = -forward
+rule-s7-2-the-plunge-is-in-degrees = la plongée est en degrés
+rule-s7-2-keeps-its-distance-to-it = reste à la même distance d'elle
+rule-s7-2-right-normalize-forward-x-up = right = normalize(forward x up)
+rule-s7-2-only-a-camera-looking-exactly = seule une caméra regardant exactement le long de up

@@ -184,7 +184,11 @@ pub fn folder_lines(grades: &[(&Stage, Grade)], language: Language) -> Vec<Strin
 }
 
 /// The grading sheet of one folder: a row per stage with its session, figure,
-/// verdict, figures and hint.
+/// verdict, figures and hint. Its column names stay English in every language, as
+/// its verdicts and its numbers do: the sheet is read by programs (a spreadsheet's
+/// formulas, a teacher's script, the check page), which find a column by its name,
+/// whatever the language of the report; only the hints, read by people, follow
+/// `--lang`.
 pub fn folder_sheet(grades: &[(&Stage, Grade)], language: Language) -> String {
     let mut csv =
         String::from("stage,session,figure,verdict,differing,red,green,blue,noise,hint\n");
@@ -200,7 +204,8 @@ pub fn folder_sheet(grades: &[(&Stage, Grade)], language: Language) -> String {
 }
 
 /// The grading sheet of a class: a row per student (`class` holds each one's name
-/// and grades), with each stage's verdict and hint.
+/// and grades), with each stage's verdict and hint. Its column names stay English,
+/// as [`folder_sheet`]'s do, for the programs that read it.
 pub fn class_sheet(class: &[(String, Vec<(&Stage, Grade)>)], language: Language) -> String {
     let mut header = vec!["student".to_owned()];
     for stage in stages() {

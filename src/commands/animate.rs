@@ -10,6 +10,7 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
 use raycourse::maths::Real;
+use raycourse::messages::{Argument, say};
 use raycourse::{Overrides, encode_png, find_stage, scene_file::stage_names};
 
 use crate::commands::Verb;
@@ -85,6 +86,7 @@ fn animate(
     options: &RenderArgs,
 ) -> Result<(), Failure> {
     let stage = find_stage(7, name).expect("clap only accepts stages of session 7");
+    let language = options.language();
     let out = options
         .out
         .clone()
@@ -102,7 +104,12 @@ fn animate(
             ..options.overrides()
         };
         let job = Job::of_stage(stage, &overrides, options)?;
-        let label = format!("{name} frame {}/{frames}", k + 1);
+        let frame = [
+            ("name", name.into()),
+            ("frame", (k + 1).into()),
+            ("frames", frames.into()),
+        ];
+        let label = say(language, "animate-frame-label", &frame);
         let timed = timed_render(&label, &job, options)?;
         let png = encode_png(&timed.result.film, job.scene.settings.gamma);
         if let Some(encoder) = encoder.as_mut() {
@@ -115,7 +122,11 @@ fn animate(
             write(&out.with_file_name(format!("{stem}-{k:03}.png")), &png)?;
         }
         if !options.work.quiet {
-            eprintln!("{label}: {:.2} s", timed.seconds);
+            let seconds = [
+                ("label", label.as_str().into()),
+                ("seconds", timed.seconds.into()),
+            ];
+            eprintln!("{}", say(language, "animate-frame", &seconds));
         }
     }
     let animated = encoder.is_some();
@@ -123,14 +134,21 @@ fn animate(
     if animated {
         write(&out, &gif)?;
     }
-    println!(
-        "{name}: {frames} frames, plunge {} to {} degrees, {:.1} s -> {}",
-        angles.0,
-        angles.1,
-        start.elapsed().as_secs_f64(),
-        out.display()
-    );
+    let done = [
+        ("name", name.into()),
+        ("frames", frames.into()),
+        ("from", shortest(angles.0)),
+        ("to", shortest(angles.1)),
+        ("seconds", start.elapsed().as_secs_f64().into()),
+        ("out", out.display().to_string().into()),
+    ];
+    println!("{}", say(language, "animate-done", &done));
     Ok(())
+}
+
+/// An angle as the command line gave it, whatever the precision of `Real`.
+fn shortest(angle: Real) -> Argument<'static> {
+    angle.to_string().parse::<f64>().unwrap_or(f64::NAN).into()
 }
 
 /// The failure of a GIF that could not be encoded.

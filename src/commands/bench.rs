@@ -3,6 +3,7 @@
 //! with the fast engine too.
 
 use clap::{ArgMatches, FromArgMatches, Parser};
+use raycourse::messages::language::Language;
 use raycourse::{Overrides, Scene, Stage, stages};
 
 use crate::commands::Verb;
@@ -66,7 +67,7 @@ fn row(stage: &Stage, scene: &Scene, course: &Timed) -> String {
         "| `{}` ({}) | {} | {:.2} s | {} | {:.2} | {} |",
         stage.name,
         stage.figure.map_or("-".into(), |f| f.to_string()),
-        scene.summary(),
+        scene.summary(Language::English),
         course.seconds,
         course.result.rays,
         course.result.rays as f64 / course.seconds / 1e6,

@@ -1,6 +1,7 @@
 //! `raycourse list`: the stages of this build.
 
 use clap::{ArgMatches, Parser};
+use raycourse::messages::language::Language;
 use raycourse::{Overrides, stages};
 
 use crate::commands::Verb;
@@ -26,9 +27,10 @@ fn run(_: &ArgMatches) -> Result<(), Failure> {
         "session", "figure", "stage", "title"
     );
     for stage in stages() {
-        let settings = stage
-            .scene(&Overrides::default())
-            .map_or_else(|e| format!("invalid scene file: {e}"), |s| s.summary());
+        let settings = stage.scene(&Overrides::default()).map_or_else(
+            |e| format!("invalid scene file: {e}"),
+            |s| s.summary(Language::English),
+        );
         println!(
             "{:<8} {:<7} {:<15} {:<58} {settings}",
             format!("s{}", stage.session),

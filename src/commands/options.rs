@@ -6,6 +6,8 @@ use std::path::PathBuf;
 use clap::Args;
 use raycourse::Overrides;
 use raycourse::inspect::aov::Aov;
+use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
 
 use crate::commands::failure::Failure;
 
@@ -82,6 +84,26 @@ pub struct RenderArgs {
     /// (spheres, boxes and triangles tested), into `out/<name>-<kind>.png`.
     #[arg(long, value_parser = aov_parser())]
     pub aov: Option<Aov>,
+    #[command(flatten)]
+    pub lang: LanguageArgs,
+}
+
+/// The language a command speaks: its closing line and its errors.
+#[derive(Args, Clone, Debug, Default)]
+pub struct LanguageArgs {
+    /// The language of the messages, `en` or `fr` (default: the locale's, from
+    /// `LC_ALL`, `LC_MESSAGES` or `LANG`; English unless it is French).
+    #[arg(long, value_parser = ["en", "fr"])]
+    pub lang: Option<String>,
+}
+
+impl LanguageArgs {
+    /// The language asked for: `--lang`, or the environment's.
+    pub fn language(&self) -> Language {
+        self.lang
+            .as_deref()
+            .map_or_else(Language::from_environment, Language::from_locale)
+    }
 }
 
 /// The kinds of `--aov`, by name.
@@ -97,6 +119,11 @@ impl RenderArgs {
     pub fn overrides(&self) -> Overrides {
         self.scene.overrides()
     }
+
+    /// The language of the render's messages (`--lang`, or the environment's).
+    pub fn language(&self) -> Language {
+        self.lang.language()
+    }
 }
 
 /// The most worker threads a command starts: far more than any machine's cores,
@@ -108,12 +135,18 @@ pub const MOST_THREADS: usize = 1024;
 pub fn thread_pool(threads: Option<NonZeroUsize>) -> Result<rayon::ThreadPool, Failure> {
     let threads = threads.map_or(0, NonZeroUsize::get);
     if threads > MOST_THREADS {
-        return Err(Failure::Input(format!(
-            "--threads {threads}: at most {MOST_THREADS} (one per core is the fastest)"
-        )));
+        let said = Said::new("command-too-many-threads")
+            .with("threads", threads as u64)
+            .with("most", MOST_THREADS as u64);
+        return Err(Failure::Refused(said));
     }
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
-        .map_err(|e| Failure::Machine(format!("cannot start {threads} worker threads: {e}")))
+        .map_err(|e| {
+            let said = Said::new("command-cannot-start-threads")
+                .with("threads", threads as u64)
+                .with("why", e.to_string());
+            Failure::Broke(said)
+        })
 }

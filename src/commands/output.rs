@@ -7,6 +7,10 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressStyle};
 use raycourse::inspect::aov::{Aov, see};
 use raycourse::inspect::false_colour::label as label_of;
+use raycourse::messages::catalogue::decimals;
+use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
+use raycourse::messages::{Argument, say};
 use raycourse::render::png::encode_rgb8;
 use raycourse::{Render, Scene, encode_png};
 
@@ -81,18 +85,17 @@ fn through_links(path: &Path) -> Result<PathBuf, Failure> {
             return Ok(target);
         }
         if !metadata.file_type().is_symlink() {
-            return Err(Failure::Input(format!(
-                "{}: not a regular file (a folder, a device or a pipe): give the path of a file to write",
-                path.display()
-            )));
+            return Err(refused_path("command-not-a-file", path));
         }
         let link = std::fs::read_link(&target).map_err(|e| Failure::write(path, e))?;
         target = target.parent().unwrap_or(Path::new("")).join(link);
     }
-    Err(Failure::Input(format!(
-        "{}: a loop of symbolic links",
-        path.display()
-    )))
+    Err(refused_path("command-link-loop", path))
+}
+
+/// The bad input of the message `id` about the file at `path`.
+fn refused_path(id: &'static str, path: &Path) -> Failure {
+    Failure::Refused(Said::new(id).with("file", path.display().to_string()))
 }
 
 /// Renders `job` into a PNG (`options.out`, or `default_out`) and prints the
@@ -106,7 +109,7 @@ pub fn render_to_file(
     let scene = &job.scene;
     if let Some(aov) = options.aov {
         #[cfg(feature = "beyond")]
-        refuse_cost_of_fast(label, aov, &job.beyond)?;
+        refuse_cost_of_fast(label, aov, &job.beyond, options.language())?;
         let name = format!("{label}-{}.png", aov.name());
         let out = options
             .out
@@ -117,31 +120,47 @@ pub fn render_to_file(
     let out = options.out.clone().unwrap_or(default_out);
     let timed = timed_render(label, job, options)?;
     write(&out, &encode_png(&timed.result.film, scene.settings.gamma))?;
-    let dropped = match timed.result.dropped {
-        0 => String::new(),
-        n => format!(", {n} non-finite samples dropped"),
-    };
-    let taken = &timed.result.samples;
-    let average = taken.iter().map(|&n| f64::from(n)).sum::<f64>() / taken.len() as f64;
-    let adaptive = match taken.iter().any(|&n| n != scene.settings.samples) {
-        true => format!(", {average:.1} spp on average"),
-        false => String::new(),
-    };
     #[cfg(feature = "beyond")]
-    options.beyond.write_noise_map(label, scene, taken)?;
+    options
+        .beyond
+        .write_noise_map(label, scene, &timed.result.samples)?;
     println!(
-        "{label}: {}, {:.3} s, {} rays, {:.2} Mrays/s, {} threads{adaptive}{dropped} -> {}",
-        scene.summary(),
-        timed.seconds,
-        timed.result.rays,
-        timed.result.rays as f64 / timed.seconds / 1e6,
-        timed.threads,
-        out.display()
+        "{}",
+        closing_line(label, job, &timed, &out, options.language())
     );
     Ok(())
 }
 
-/// Refuses `--aov cost` with the fast engine: the image counts the tests of the
+/// The closing line of `job`'s render in `language`: its settings, time, rays,
+/// Mrays/s and threads, and where the image went.
+fn closing_line(label: &str, job: &Job, timed: &Timed, out: &Path, language: Language) -> String {
+    let scene = &job.scene;
+    let taken = &timed.result.samples;
+    let average = taken.iter().map(|&n| f64::from(n)).sum::<f64>() / taken.len() as f64;
+    let adaptive = match taken.iter().any(|&n| n != scene.settings.samples) {
+        true => say(language, "render-adaptive", &[("average", average.into())]),
+        false => String::new(),
+    };
+    let dropped = match timed.result.dropped {
+        0 => String::new(),
+        n => say(language, "render-dropped", &[("dropped", n.into())]),
+    };
+    let rays = timed.result.rays;
+    let arguments = [
+        ("label", label.into()),
+        ("summary", scene.summary(language).into()),
+        ("seconds", timed.seconds.into()),
+        ("rays", rays.into()),
+        ("speed", (rays as f64 / timed.seconds / 1e6).into()),
+        ("threads", timed.threads.into()),
+        ("adaptive", adaptive.into()),
+        ("dropped", dropped.into()),
+        ("out", out.display().to_string().into()),
+    ];
+    say(language, "render-done", &arguments)
+}
+
+/// Refuses `--aov cost` with the fast engine, in `language`: the image counts the tests of the
 /// course's searches, and the fast engine's own searches (its hierarchy, session
 /// 5's triangles on lanes) count none, so its mean would be the spheres' alone.
 #[cfg(feature = "beyond")]
@@ -149,12 +168,11 @@ fn refuse_cost_of_fast(
     label: &str,
     aov: Aov,
     beyond: &raycourse::scene::beyond::Beyond,
+    language: Language,
 ) -> Result<(), Failure> {
     if aov == Aov::Cost && beyond.fast {
-        return Err(Failure::Input(format!(
-            "{label}: `--aov cost` counts the tests of the course's searches, which the fast \
-             engine does not run: leave out `--fast` (or `fast = true` in the scene file)"
-        )));
+        let why = say(language, "render-cost-not-fast", &[("label", label.into())]);
+        return Err(Failure::Input(why));
     }
     Ok(())
 }
@@ -170,22 +188,39 @@ fn aov_to_file(
 ) -> Result<(), Failure> {
     let image = options.work.pool()?.install(|| see(scene, aov));
     write(out, &encode_rgb8(&image.rgb, image.width, image.height))?;
+    let language = options.language();
     let range = match image.range {
-        Some((low, high)) => format!(
-            ", from {} (purple) to {} (yellow)",
-            label_of(low),
-            label_of(high)
+        Some((low, high)) => say(
+            language,
+            "render-aov-range",
+            &[
+                ("low", written(&label_of(low))),
+                ("high", written(&label_of(high))),
+            ],
         ),
         None => String::new(),
     };
     let mean = match (aov, image.mean) {
-        (Aov::Cost, Some(mean)) => format!(", mean cost {mean:.1} tests a ray"),
+        (Aov::Cost, Some(mean)) => {
+            let mean = written(&format!("{mean:.1}"));
+            say(language, "render-aov-mean", &[("mean", mean)])
+        }
         _ => String::new(),
     };
-    println!(
-        "{label}: {} image{range}{mean} -> {}",
-        aov.name(),
-        out.display()
-    );
+    let arguments = [
+        ("label", label.into()),
+        ("aov", aov.name().into()),
+        ("range", range.into()),
+        ("mean", mean.into()),
+        ("out", out.display().to_string().into()),
+    ];
+    println!("{}", say(language, "render-aov-done", &arguments));
     Ok(())
+}
+
+/// A number as the program wrote it (`0.25`, `12.5`, `3`), its digits kept and
+/// its decimal mark the message's language's.
+fn written(text: &str) -> Argument<'static> {
+    let places = text.split_once('.').map_or(0, |(_, d)| d.len());
+    decimals(text.parse().unwrap_or(f64::NAN), places)
 }

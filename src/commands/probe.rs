@@ -6,13 +6,16 @@ use std::path::PathBuf;
 
 use clap::{ArgMatches, FromArgMatches, Parser};
 use raycourse::inspect::probe::probe;
+use raycourse::messages::language::Language;
+use raycourse::messages::said::Said;
+use raycourse::messages::{Argument, say};
 use raycourse::stages;
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
 use crate::commands::job::Job;
 use crate::commands::options::RenderArgs;
-use crate::commands::options::SceneArgs;
+use crate::commands::options::{LanguageArgs, SceneArgs};
 
 /// Follow one sample of one pixel ray by ray: each hit, the light, the next
 /// direction and what each ray adds, computed by the renderer's own functions.
@@ -39,6 +42,8 @@ struct ProbeArgs {
     json: bool,
     #[command(flatten)]
     scene_options: SceneArgs,
+    #[command(flatten)]
+    lang: LanguageArgs,
 }
 
 /// The `probe` command.
@@ -52,6 +57,9 @@ inventory::submit! { VERB }
 
 fn run(matches: &ArgMatches) -> Result<(), Failure> {
     let args = ProbeArgs::from_arg_matches(matches)?;
+    let language = args.lang.language();
+    let refused =
+        |id: &str, arguments: &[(&str, Argument)]| Failure::Input(say(language, id, arguments));
     let overrides = args.scene_options.overrides();
     let options = RenderArgs::default();
     let (first, second) = (&args.first, &args.second);
@@ -61,45 +69,48 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
             let (name, x, y) = (first, second, third);
             let stage = stages().find(|s| s.name == name.as_str()).ok_or_else(|| {
                 let names: Vec<&str> = stages().map(|s| s.name).collect();
-                Failure::Input(format!(
-                    "no stage `{name}` in this build: one of {}",
-                    names.join(", ")
-                ))
+                let names = names.join(", ");
+                refused(
+                    "probe-no-stage",
+                    &[("name", name.as_str().into()), ("names", names.into())],
+                )
             })?;
             (Job::of_stage(stage, &overrides, &options)?, [x, y])
         }
-        (Some(_), _) => return Err(Failure::Input("with --scene, give only X Y".into())),
-        (None, _) => {
-            return Err(Failure::Input(
-                "give STAGE X Y (or --scene FILE X Y)".into(),
-            ));
-        }
+        (Some(_), _) => return Err(refused("probe-scene-and-stage", &[])),
+        (None, _) => return Err(refused("probe-give-stage", &[])),
     };
-    let [x, y] = pixel.map(|v| coordinate(v));
+    let [x, y] = pixel.map(|v| coordinate(v, language));
     #[cfg(feature = "beyond")]
     if let Some(what) = job.beyond.beyond_the_course() {
-        let refusal = format!("the probe follows the course's code; this scene asks for {what}");
-        return Err(Failure::Input(refusal));
+        return Err(refused("probe-beyond-the-course", &[("what", what.into())]));
     }
-    let found = probe(&job.scene, x?, y?, args.sample).map_err(Failure::input)?;
+    let found =
+        probe(&job.scene, x?, y?, args.sample).map_err(|e| Failure::Input(e.say(language)))?;
     let text = if args.json {
-        serde_json::to_string_pretty(&found)
-            .map_err(|e| Failure::Machine(format!("cannot write the probe as JSON: {e}")))?
+        serde_json::to_string_pretty(&found).map_err(|e| broke("probe-cannot-write-json", e))?
             + "\n"
     } else {
-        found.to_string()
+        found.text(language)
     };
     // A reader that stops early (`| head`) is not a failure.
     match std::io::stdout().write_all(text.as_bytes()) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(Failure::Machine(format!(
-            "cannot write to the standard output: {e}"
-        ))),
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(broke("probe-cannot-write-output", e))
+        }
         _ => Ok(()),
     }
 }
 
-/// A pixel coordinate: a whole number from 0.
-fn coordinate(text: &str) -> Result<u32, Failure> {
-    text.parse()
-        .map_err(|_| Failure::Input(format!("`{text}` is not a pixel coordinate (0, 1, 2, ...)")))
+/// The failure of the machine the message `id` names, `error` saying why.
+fn broke(id: &'static str, error: impl std::fmt::Display) -> Failure {
+    Failure::Broke(Said::new(id).with("why", error.to_string()))
+}
+
+/// A pixel coordinate: a whole number from 0; refused in `language` otherwise.
+fn coordinate(text: &str, language: Language) -> Result<u32, Failure> {
+    text.parse().map_err(|_| {
+        let why = say(language, "probe-not-a-coordinate", &[("text", text.into())]);
+        Failure::Input(why)
+    })
 }

@@ -11,15 +11,17 @@ use crate::inspect::path::{Level, Met, Probe};
 use crate::integrator::Tracer;
 use crate::integrator::tracer::Traced;
 use crate::maths::{Colour, Vec3};
+use crate::messages::language::Language;
+use crate::messages::said::Said;
 use crate::render::film::display;
 use crate::render::rows::pixel;
 use crate::scene::Scene;
 
-/// Why a probe cannot follow the pixel.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+/// Why a probe cannot follow the pixel: [`ProbeError::say`] says it in a
+/// language, `Display` in English.
+#[derive(Clone, Debug, PartialEq)]
 pub enum ProbeError {
     /// The pixel is outside the image.
-    #[error("pixel ({x}, {y}) is outside the image, which is {width}x{height}")]
     Outside {
         /// The column asked for.
         x: u32,
@@ -31,7 +33,6 @@ pub enum ProbeError {
         height: u32,
     },
     /// The sample is past the pixel's samples.
-    #[error("sample {sample} does not exist: the pixel takes {samples} (from 0)")]
     NoSuchSample {
         /// The sample asked for.
         sample: u32,
@@ -39,6 +40,36 @@ pub enum ProbeError {
         samples: u32,
     },
 }
+
+impl ProbeError {
+    /// Why the probe cannot follow the pixel, in `language`.
+    pub fn say(&self, language: Language) -> String {
+        let said = match *self {
+            ProbeError::Outside {
+                x,
+                y,
+                width,
+                height,
+            } => Said::new("probe-outside")
+                .with("x", u64::from(x))
+                .with("y", u64::from(y))
+                .with("width", u64::from(width))
+                .with("height", u64::from(height)),
+            ProbeError::NoSuchSample { sample, samples } => Said::new("probe-no-such-sample")
+                .with("sample", u64::from(sample))
+                .with("samples", u64::from(samples)),
+        };
+        said.say(language)
+    }
+}
+
+impl std::fmt::Display for ProbeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str(&self.say(Language::English))
+    }
+}
+
+impl std::error::Error for ProbeError {}
 
 /// Follows sample `sample` of pixel (`x`, `y`) of `scene`.
 pub fn probe(scene: &Scene, x: u32, y: u32, sample: u32) -> Result<Probe, ProbeError> {

@@ -29,6 +29,9 @@ pub const FILES: &[(Language, &[(&str, &str)])] = &[
             ("check.ftl", include_str!("../../messages/en/check.ftl")),
             ("page.ftl", include_str!("../../messages/en/page.ftl")),
             ("plot.ftl", include_str!("../../messages/en/plot.ftl")),
+            ("probe.ftl", include_str!("../../messages/en/probe.ftl")),
+            ("render.ftl", include_str!("../../messages/en/render.ftl")),
+            ("scene.ftl", include_str!("../../messages/en/scene.ftl")),
         ],
     ),
     (
@@ -37,6 +40,9 @@ pub const FILES: &[(Language, &[(&str, &str)])] = &[
             ("check.ftl", include_str!("../../messages/fr/check.ftl")),
             ("page.ftl", include_str!("../../messages/fr/page.ftl")),
             ("plot.ftl", include_str!("../../messages/fr/plot.ftl")),
+            ("probe.ftl", include_str!("../../messages/fr/probe.ftl")),
+            ("render.ftl", include_str!("../../messages/fr/render.ftl")),
+            ("scene.ftl", include_str!("../../messages/fr/scene.ftl")),
         ],
     ),
 ];
@@ -127,10 +133,22 @@ pub fn say(language: Language, id: &str, arguments: &[(&str, Argument)]) -> Stri
 /// the message's language writes it (`0.50`, `0,50`): for figures whose digits
 /// the program chose.
 pub fn decimals(value: f64, decimals: usize) -> Argument<'static> {
+    fixed(value, decimals, false)
+}
+
+/// A number written with exactly `decimals` decimals and its digits grouped as the
+/// message's language groups them (`1,950,868.5`, `1 950 868,5`): for tables of
+/// figures the program chose.
+pub fn grouped(value: f64, decimals: usize) -> Argument<'static> {
+    fixed(value, decimals, true)
+}
+
+/// A number with exactly `decimals` decimals, its digits grouped if `grouping`.
+fn fixed(value: f64, decimals: usize, grouping: bool) -> Argument<'static> {
     let options = FluentNumberOptions {
         minimum_fraction_digits: Some(decimals),
         maximum_fraction_digits: Some(decimals),
-        use_grouping: false,
+        use_grouping: grouping,
         ..FluentNumberOptions::default()
     };
     FluentValue::Number(FluentNumber::new(value, options))

@@ -43,14 +43,6 @@ impl Language {
             .find(|value| !value.is_empty())
             .map_or(Language::English, |locale| Language::from_locale(&locale))
     }
-
-    /// `english` or `french`, whichever is this language's.
-    pub fn pick<'a>(self, english: &'a str, french: &'a str) -> &'a str {
-        match self {
-            Language::English => english,
-            Language::French => french,
-        }
-    }
 }
 
 #[cfg(test)]

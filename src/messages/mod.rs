@@ -10,9 +10,11 @@
 //! | [`language`] | English or French, as the locale or `--lang` asks |
 //! | [`catalogue`] | the catalogue's files and its messages with their arguments |
 //! | [`numbers`] | numbers in a message, as the language writes them |
+//! | [`said`] | a message kept with its arguments, said once the language is known |
 
 pub mod catalogue;
 pub mod language;
 pub mod numbers;
+pub mod said;
 
 pub use catalogue::{Argument, say};

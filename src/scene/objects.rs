@@ -4,6 +4,8 @@ use crate::camera::Camera;
 use crate::geometry::{Ray, Sphere};
 use crate::lights::Light;
 use crate::maths::Real;
+use crate::messages::language::Language;
+use crate::messages::say;
 use crate::scene::Settings;
 
 #[cfg(feature = "s5")]
@@ -48,26 +50,30 @@ impl Scene {
         }
     }
 
-    /// The render settings in a few words, such as `512x512, 1 spp, 5 bounces, gamma 2.2,
-    /// shadows`.
-    pub fn summary(&self) -> String {
+    /// The render settings in a few words of `language`, such as `512x512, 1 spp, 5
+    /// bounces, gamma 2.2, shadows` (the catalogue's `summary-*` messages).
+    pub fn summary(&self, language: Language) -> String {
         let s = &self.settings;
-        let mut text = format!(
-            "{}x{}, {} spp, {} bounces",
-            self.camera.width, self.camera.height, s.samples, s.bounces
-        );
+        let size = [
+            ("width", self.camera.width.into()),
+            ("height", self.camera.height.into()),
+            ("samples", s.samples.into()),
+            ("bounces", s.bounces.into()),
+        ];
+        let mut text = say(language, "summary-settings", &size);
         if s.gamma != 1.0 {
-            text += &format!(", gamma {}", s.gamma);
+            // The gamma as the scene file wrote it, whatever the precision of `Real`.
+            let gamma = s.gamma.to_string().parse::<f64>().unwrap_or(f64::NAN);
+            text += &say(language, "summary-gamma", &[("gamma", gamma.into())]);
         }
-        for (on, name) in [
-            (s.shadows, "shadows"),
-            (s.indirect, "indirect"),
-            (s.light_sampling, "light sampling"),
-            (s.russian_roulette.is_some(), "Russian roulette"),
+        for (on, id) in [
+            (s.shadows, "summary-shadows"),
+            (s.indirect, "summary-indirect"),
+            (s.light_sampling, "summary-light-sampling"),
+            (s.russian_roulette.is_some(), "summary-russian-roulette"),
         ] {
             if on {
-                text += ", ";
-                text += name;
+                text += &say(language, id, &[]);
             }
         }
         text

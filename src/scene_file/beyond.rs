@@ -17,8 +17,10 @@ use crate::files::{Disk, Files};
 use crate::maths::Real;
 use crate::maths::values::Positive;
 use crate::meshes::{Mesh, Search};
+use crate::messages::said::Said;
 use crate::scene::Scene;
 use crate::scene::beyond::{Beyond, Sampler};
+use crate::scene_file::error::value_rule;
 use crate::scene_file::field_names::field_names;
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
 use crate::scene_file::load::{checked, parse_table, read_table};
@@ -71,7 +73,7 @@ impl BeyondOverrides {
                     Positive::try_from(noise).map_err(|message| SceneError::Inconsistent {
                         path: path.to_owned(),
                         key: "render.noise".into(),
-                        message,
+                        message: value_rule(&message).expect("a rule of the catalogue"),
                     })?,
                 );
         }
@@ -151,9 +153,7 @@ fn scene(
         return Err(SceneError::Inconsistent {
             path: path.to_owned(),
             key: "render.leaf_size".into(),
-            message: "only the fast engine's hierarchy has a leaf size: `fast = true` with \
-                      `acceleration = \"bvh\"`"
-                .into(),
+            message: Said::new("scene-leaf-size-needs-fast"),
         });
     }
     if !keys.fast {

@@ -4,6 +4,8 @@
 //! render uses. When a scene asks for something this build lacks, the loader names
 //! the feature that brings it, using the session number below.
 
+use crate::messages::said::Said;
+
 /// The last course session enabled in this build: 7 with feature `s7` (the default),
 /// 1 with `s1` alone. The build script (`build.rs`) finds it.
 pub const SESSION: u32 = (env!("RAYCOURSE_SESSION").as_bytes()[0] - b'0') as u32;
@@ -28,22 +30,21 @@ pub const MADE: Made = match env!("RAYCOURSE_MADE").as_bytes()[0] {
 
 /// What a scene that asks for a part of session `later` is told in this build,
 /// after what it asked for: "needs feature s4: ..." in the course's crate.
-pub fn comes_with(later: u32) -> String {
+pub fn comes_with(later: u32) -> Said {
     remedy(MADE, later, SESSION)
 }
 
 /// What a scene that asks for a part of session `later` is told in a crate `made`
 /// so that stops at `session`: the feature to enable, or the session that brings it.
-pub fn remedy(made: Made, later: u32, session: u32) -> String {
-    match made {
-        Made::Features => format!("needs feature s{later}: cargo run --features s{later} -- ..."),
-        Made::View => format!(
-            "comes with session {later}: this crate stops at session {session} (`cargo xtask view s{later} DIR` in the course's crate writes session {later}'s)"
-        ),
-        Made::Exercises => format!(
-            "comes with session {later}: you write it then; this crate holds session {session}'s exercises"
-        ),
-    }
+pub fn remedy(made: Made, later: u32, session: u32) -> Said {
+    let id = match made {
+        Made::Features => "scene-needs-feature-s",
+        Made::View => "scene-comes-with-view",
+        Made::Exercises => "scene-comes-with-exercises",
+    };
+    Said::new(id)
+        .with("later", u64::from(later))
+        .with("session", u64::from(session))
 }
 
 #[cfg(test)]
@@ -53,15 +54,15 @@ mod tests {
     #[test]
     fn each_kind_of_crate_names_the_later_session_its_way() {
         assert_eq!(
-            remedy(Made::Features, 4, 3),
+            remedy(Made::Features, 4, 3).to_string(),
             "needs feature s4: cargo run --features s4 -- ..."
         );
         assert_eq!(
-            remedy(Made::View, 4, 3),
+            remedy(Made::View, 4, 3).to_string(),
             "comes with session 4: this crate stops at session 3 (`cargo xtask view s4 DIR` in the course's crate writes session 4's)"
         );
         assert_eq!(
-            remedy(Made::Exercises, 4, 3),
+            remedy(Made::Exercises, 4, 3).to_string(),
             "comes with session 4: you write it then; this crate holds session 3's exercises"
         );
     }

@@ -13,6 +13,7 @@ use crate::maths::Real;
 use crate::maths::values::Finite;
 use crate::scene::Scene;
 use crate::scene_file::consistency::check_consistency;
+use crate::scene_file::error::value_rule;
 use crate::scene_file::format::SceneFile;
 use crate::scene_file::sessions::{check_materials, check_sessions};
 use crate::scene_file::{SceneError, one_line};
@@ -128,7 +129,7 @@ pub fn checked(
         .map_err(|(key, message)| SceneError::Inconsistent {
             path: path.to_owned(),
             key: key.into(),
-            message,
+            message: value_rule(&message).expect("a rule of the catalogue"),
         })?;
     check_sessions(&file, path)?;
     check_consistency(&file, path)?;

@@ -9,6 +9,7 @@ use crate::files::Files;
 use crate::geometry::TriangleTest;
 use crate::maths::{Colour, Mat3, Vec3};
 use crate::meshes::{Mesh, MeshAlbedo, Placement, read_obj_from};
+use crate::messages::said::Said;
 use crate::scene::Scene;
 use crate::scene_file::format::{AccelerationSpec, MeshSpec, SceneFile, TriangleTestSpec};
 use crate::scene_file::{SceneError, one_line, session4};
@@ -40,7 +41,7 @@ pub fn load_mesh(spec: &MeshSpec, path: &Path, files: &dyn Files) -> Result<Mesh
     let data = read_obj_from(&obj, files).map_err(|e| SceneError::Asset {
         scene: path.to_owned(),
         file: obj.clone(),
-        message: format!("cannot load the mesh: {}", one_line(&e)),
+        message: Said::new("scene-cannot-load-mesh").with("why", one_line(&e)),
     })?;
     let [rx, ry, rz] = spec.rotation.map_or([0.0; 3], |r| r.0.to_array());
     let placement = Placement {

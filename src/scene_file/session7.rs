@@ -7,6 +7,7 @@ use crate::files::Files;
 use crate::materials::texture::{Filter, Texture};
 use crate::maths::Vec3;
 use crate::meshes::{Mesh, MeshAlbedo};
+use crate::messages::said::Said;
 use crate::scene::Scene;
 use crate::scene_file::format::{FilterSpec, MeshSpec, SceneFile};
 use crate::scene_file::{SceneError, one_line, session6};
@@ -29,7 +30,7 @@ pub fn scene(file: &SceneFile, path: &Path, files: &dyn Files) -> Result<Scene, 
             SceneError::Inconsistent {
                 path: path.to_owned(),
                 key: "camera.up".into(),
-                message: "the camera must not look along `up` or at its own position".into(),
+                message: Said::new("scene-camera-cannot-aim"),
             }
         })?;
         scene.camera.position = eye;
@@ -67,6 +68,6 @@ pub fn mesh_texture(
         .map_err(|e| SceneError::Asset {
             scene: scene.to_owned(),
             file,
-            message: format!("cannot read the texture: {}", one_line(&e)),
+            message: Said::new("scene-cannot-read-texture").with("why", one_line(&e)),
         })
 }

@@ -8,22 +8,23 @@ use crate::scene_file::features::{SESSION, comes_with};
 use crate::scene_file::format::{AccelerationSpec, SceneFile};
 
 /// The materials of later sessions, by their name in a scene file: the session that
-/// teaches each and what it is.
+/// teaches each and what it is (a message of the catalogue's `scene.ftl`).
 const MATERIALS: &[(&str, u32, &str)] = &[
-    ("mirror", 2, "a mirror material"),
-    ("glass", 2, "a glass material"),
-    ("fresnel-glass", 4, "a Fresnel glass material"),
+    ("mirror", 2, "scene-part-mirror"),
+    ("glass", 2, "scene-part-glass"),
+    ("fresnel-glass", 4, "scene-part-fresnel-glass"),
 ];
 
-/// `Ok` if this build has `session`, else the error naming its feature.
-pub fn require(path: &Path, key: &str, session: u32, what: &str) -> Result<(), SceneError> {
+/// `Ok` if this build has `session`, else the error naming its feature; `what` is
+/// the message that names what the scene asked for.
+pub fn require(path: &Path, key: &str, session: u32, what: &'static str) -> Result<(), SceneError> {
     if session <= SESSION {
         Ok(())
     } else {
         Err(SceneError::NeedsFeature {
             path: path.to_owned(),
             key: key.to_owned(),
-            what: what.to_owned(),
+            what,
             remedy: comes_with(session),
         })
     }
@@ -52,7 +53,8 @@ pub fn check_materials(source: &str, path: &Path) -> Result<(), SceneError> {
 }
 
 /// A key of the scene file that a session brings: whether a file uses it, its
-/// dotted name, the session and what it is.
+/// dotted name, the session and what it is (a message of the catalogue's
+/// `scene.ftl`).
 type SessionKey = (fn(&SceneFile) -> bool, &'static str, u32, &'static str);
 
 /// The keys that sessions 2 to 7 bring, in course order.
@@ -61,70 +63,80 @@ const KEYS: &[SessionKey] = &[
         |f| f.render.gamma.is_some(),
         "render.gamma",
         2,
-        "gamma correction",
+        "scene-part-gamma",
     ),
-    (|f| f.render.shadows, "render.shadows", 2, "shadow rays"),
+    (
+        |f| f.render.shadows,
+        "render.shadows",
+        2,
+        "scene-part-shadows",
+    ),
     (
         |f| f.render.shadow_offset.is_some(),
         "render.shadow_offset",
         2,
-        "a fixed shadow-ray offset",
+        "scene-part-shadow-offset",
     ),
     (
         |f| f.render.indirect,
         "render.indirect",
         3,
-        "indirect lighting",
+        "scene-part-indirect",
     ),
     (
         |f| f.camera.antialiasing.is_some(),
         "camera.antialiasing",
         3,
-        "antialiasing",
+        "scene-part-antialiasing",
     ),
     (
         |f| f.render.light_sampling,
         "render.light_sampling",
         4,
-        "light sampling",
+        "scene-part-light-sampling",
     ),
     (
         |f| f.render.russian_roulette.is_some(),
         "render.russian_roulette",
         4,
-        "Russian roulette",
+        "scene-part-russian-roulette",
     ),
-    (|f| f.camera.lens.is_some(), "camera.lens", 4, "a thin lens"),
+    (
+        |f| f.camera.lens.is_some(),
+        "camera.lens",
+        4,
+        "scene-part-lens",
+    ),
     (
         |f| f.light.as_ref().is_some_and(|l| l.radius.is_some()),
         "light.radius",
         4,
-        "a sphere light",
+        "scene-part-sphere-light",
     ),
-    (|f| !f.meshes.is_empty(), "meshes", 5, "triangle meshes"),
+    (|f| !f.meshes.is_empty(), "meshes", 5, "scene-part-meshes"),
     (
         |f| f.render.acceleration != AccelerationSpec::None,
         "render.acceleration",
         5,
-        "an acceleration structure",
+        "scene-part-acceleration",
     ),
     (
         |f| f.render.triangle_test.is_some(),
         "render.triangle_test",
         5,
-        "triangle meshes",
+        "scene-part-meshes",
     ),
     (
         |f| f.render.acceleration == AccelerationSpec::Bvh,
         "render.acceleration",
         6,
-        "a bounding volume hierarchy",
+        "scene-part-bvh",
     ),
     (
         |f| f.camera.look_at.is_some() || f.camera.up.is_some() || f.camera.plunge.is_some(),
         "camera.look_at",
         7,
-        "an aimed camera",
+        "scene-part-aimed-camera",
     ),
 ];
 
@@ -141,11 +153,16 @@ pub fn check_sessions(file: &SceneFile, path: &Path) -> Result<(), SceneError> {
                 path,
                 &format!("meshes[{i}].smooth_normals"),
                 6,
-                "smooth normals",
+                "scene-part-smooth-normals",
             )?;
         }
         if mesh.textured || mesh.texture.is_some() || mesh.texture_filter.is_some() {
-            require(path, &format!("meshes[{i}].textured"), 7, "textures")?;
+            require(
+                path,
+                &format!("meshes[{i}].textured"),
+                7,
+                "scene-part-textures",
+            )?;
         }
     }
     Ok(())

@@ -14,6 +14,9 @@ mod inspect;
 mod pictures;
 
 #[cfg(feature = "s2")]
+mod languages;
+
+#[cfg(feature = "s2")]
 mod furnace;
 
 #[cfg(all(feature = "s3", not(feature = "f32")))]

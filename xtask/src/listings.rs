@@ -27,6 +27,7 @@
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
+use raycourse::messages::language::Language;
 use serde_json::Value;
 
 use crate::view::write_view;
@@ -40,11 +41,7 @@ pub fn preprocess(root: &Path) -> Result<(), String> {
     }
     let (context, mut book) = crate::preprocessor::read()?;
     let language = context["config"]["book"]["language"].as_str();
-    let words = if language == Some("fr") {
-        &FRENCH
-    } else {
-        &ENGLISH
-    };
+    let words = &Words::of(Language::from_locale(language.unwrap_or("en")));
     let mut seen = HashSet::new();
     let places = Places {
         views,
@@ -55,52 +52,42 @@ pub fn preprocess(root: &Path) -> Result<(), String> {
     Ok(())
 }
 
-/// The words the preprocessor writes around the code, in the book's language.
+/// The words the preprocessor writes around the code, in the book's language,
+/// from the book's catalogue (`messages/<code>/book.ftl`).
 struct Words {
+    /// The edition's language: it names the exercises (by their checklist entry's
+    /// French title in French, their marker's English one otherwise), writes the
+    /// `bench` tables and chooses the folder of the outputs.
+    language: Language,
     /// A listing's session, before its number.
-    session: &'static str,
+    session: String,
     /// After a listing's session: the lines it gained are marked.
-    gained: &'static str,
+    gained: String,
     /// After a listing's session: the code is the session before's.
-    unchanged: &'static str,
+    unchanged: String,
     /// In place of a session: the code goes beyond the course.
-    beyond: &'static str,
+    beyond: String,
     /// The exercises table's header.
-    header: &'static str,
+    header: String,
     /// Between two functions of one exercise.
-    and: &'static str,
-    /// Whether an exercise is named by its checklist entry's French title instead
-    /// of its marker's English one.
-    french_titles: bool,
-    /// A `bench` table as this edition shows it.
-    timings: fn(&str) -> String,
-    /// The folder of this edition's outputs, `book/src/outputs/CODE/`.
-    outputs: &'static str,
+    and: String,
 }
 
-const ENGLISH: Words = Words {
-    session: "session",
-    gained: ", lines marked `// +` new in this session",
-    unchanged: ", unchanged since the last session",
-    beyond: "beyond the course",
-    header: "| exercise | what you write | function | file | checklist line |",
-    and: " and ",
-    french_titles: false,
-    timings: str::to_owned,
-    outputs: "en",
-};
-
-const FRENCH: Words = Words {
-    session: "séance",
-    gained: ", lignes marquées `// +` nouvelles dans cette séance",
-    unchanged: ", inchangé depuis la séance précédente",
-    beyond: "au-delà du cours",
-    header: "| exercice | ce que vous écrivez | fonction | fichier | ligne de la liste de contrôle |",
-    and: " et ",
-    french_titles: true,
-    timings: crate::timings::french,
-    outputs: "fr",
-};
+impl Words {
+    /// The words of the edition in `language`.
+    fn of(language: Language) -> Words {
+        let say = |id: &str| crate::words::catalogue(language).say(id, &[]);
+        Words {
+            language,
+            session: say("book-session"),
+            gained: say("book-gained"),
+            unchanged: say("book-unchanged"),
+            beyond: say("book-beyond"),
+            header: say("book-exercises-header"),
+            and: say("book-and"),
+        }
+    }
+}
 
 /// Where the preprocessor reads what it fills in.
 struct Places {
@@ -238,7 +225,7 @@ fn timing_tables(content: &str, src: &Path, words: &Words) -> Result<String, Str
         let file = src.join(file);
         let table = std::fs::read_to_string(&file)
             .map_err(|e| format!("the timings {}: {e}", file.display()))?;
-        Ok((words.timings)(&table))
+        Ok(crate::timings::in_language(&table, words.language))
     })
 }
 
@@ -247,7 +234,7 @@ fn timing_tables(content: &str, src: &Path, words: &Words) -> Result<String, Str
 /// run it (`book/outputs.sh` for `check`, `.ci/exercises` for the checklist).
 fn outputs(content: &str, src: &Path, words: &Words) -> Result<String, String> {
     crate::directive::replace(content, "output", |name| {
-        let file = src.join(format!("outputs/{}/{name}.txt", words.outputs));
+        let file = src.join(format!("outputs/{}/{name}.txt", words.language.code()));
         let text = std::fs::read_to_string(&file)
             .map_err(|e| format!("the output {}: {e}", file.display()))?;
         Ok(text.trim_end().to_owned())
@@ -295,7 +282,7 @@ fn exercise_table(n: u32, views: &Path, words: &Words) -> Result<String, String>
             })
             .map(|l| l.trim_end_matches("\",").to_owned())
             .ok_or_else(|| format!("exercise {id} has no line in tests/exercises/s{n}.rs"))?;
-        let title = if words.french_titles {
+        let title = if words.language == Language::French {
             french_title(&view, &id).ok_or_else(|| {
                 format!("exercise {id} has no French title in messages/fr/checklist.ftl")
             })?
@@ -304,7 +291,7 @@ fn exercise_table(n: u32, views: &Path, words: &Words) -> Result<String, String>
         };
         table += &format!(
             "| {id} | {title} | {} | `{}` | `{line}` |\n",
-            functions.join(words.and),
+            functions.join(&words.and),
             group[0].1
         );
         i += group.len();
@@ -345,7 +332,7 @@ fn listing(directive: &str, views: &Path, words: &Words) -> Result<String, Strin
         let root = views.ancestors().nth(2).unwrap_or(views);
         let code = anchored(&root.join(file), anchor)?
             .ok_or_else(|| format!("no anchor `{anchor}` in {file}"))?;
-        let beyond = words.beyond;
+        let beyond = &words.beyond;
         return Ok(format!(
             "<p class=\"listing-caption\"><code>{file}</code> ({beyond})</p>\n\n```rust,ignore\n{code}```\n"
         ));
@@ -363,11 +350,11 @@ fn listing(directive: &str, views: &Path, words: &Words) -> Result<String, Strin
         _ => anchored(&path(n - 1), anchor)?,
     };
     let (code, note) = match before {
-        Some(before) if before != code => (mark_gained(&before, &code), words.gained),
-        Some(_) => (code, words.unchanged),
+        Some(before) if before != code => (mark_gained(&before, &code), words.gained.as_str()),
+        Some(_) => (code, words.unchanged.as_str()),
         None => (code, ""),
     };
-    let session = words.session;
+    let session = &words.session;
     Ok(format!(
         "<p class=\"listing-caption\"><code>{file}</code> ({session} {n}{note})</p>\n\n```rust,ignore\n{code}```\n"
     ))
@@ -454,7 +441,7 @@ fn mark_gained(before: &str, after: &str) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::{ENGLISH, FRENCH, captioned, french_title, mark_gained, outputs};
+    use super::{Language, Words, captioned, french_title, mark_gained, outputs};
 
     /// The title is the exercise's own message of the French catalogue, not a
     /// neighbour's nor its section.
@@ -482,10 +469,26 @@ mod tests {
         }
         let page = "```text\n{{#output check}}\n```";
         let filled = |words| outputs(page, src.path(), words).unwrap();
-        assert_eq!(filled(&ENGLISH), "```text\nglass: differs\n```");
-        assert_eq!(filled(&FRENCH), "```text\nglass : diffère\n```");
-        let missing = outputs("{{#output other}}", src.path(), &ENGLISH).unwrap_err();
+        let (english, french) = (Words::of(Language::English), Words::of(Language::French));
+        assert_eq!(filled(&english), "```text\nglass: differs\n```");
+        assert_eq!(filled(&french), "```text\nglass : diffère\n```");
+        let missing = outputs("{{#output other}}", src.path(), &english).unwrap_err();
         assert!(missing.contains("outputs/en/other.txt"), "{missing}");
+    }
+
+    /// The captions' words come from the book's catalogue, in each edition's
+    /// language.
+    #[test]
+    fn the_words_are_the_edition_s() {
+        assert_eq!(Words::of(Language::English).session, "session");
+        let french = Words::of(Language::French);
+        assert_eq!(french.session, "séance");
+        assert_eq!(french.and, " et ");
+        assert!(
+            french
+                .header
+                .starts_with("| exercice | ce que vous écrivez |")
+        );
     }
 
     #[test]

@@ -48,6 +48,7 @@ mod source;
 mod student;
 mod timings;
 mod view;
+mod words;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;

@@ -1,29 +1,41 @@
 //! `{{#timings FILE}}`: a table that `raycourse bench` printed, kept in `book/src/`
 //! as it was measured. The English edition shows it as it is; the French one shows
 //! the same figures in French: its words translated, decimal commas, thousands
-//! grouped, a non-breaking space before a unit.
+//! grouped, a non-breaking space before a unit, all from the book's catalogue
+//! (`messages/<code>/book.ftl`, numbers written by its library).
 
-/// The table's English words, those of `bench`'s header and of the settings'
-/// summary (`Scene::summary`), with their French; the longer first where one holds
-/// another.
-const WORDS: &[(&str, &str)] = &[
-    ("course's code", "code du cours"),
-    ("speed-up", "accélération"),
-    ("settings", "réglages"),
-    ("stage", "étape"),
-    ("Mrays/s", "Mrayons/s"),
-    ("rays", "rayons"),
-    ("course", "cours"),
-    ("about", "environ"),
-    ("spp", "éch./pixel"),
-    ("bounces", "rebonds"),
-    ("shadows", "ombres"),
-    ("light sampling", "échantillonnage de la lumière"),
-    ("Russian roulette", "roulette russe"),
+use raycourse::messages::catalogue::{Argument, grouped};
+use raycourse::messages::language::Language;
+
+use crate::words::catalogue;
+
+/// The table's words, those of `bench`'s header and of the settings' summary
+/// (`Scene::summary`): messages of the book's catalogue (`bench-*`), the longer
+/// first where one holds another.
+const WORDS: &[&str] = &[
+    "bench-course-s-code",
+    "bench-speed-up",
+    "bench-settings",
+    "bench-stage",
+    "bench-mrays",
+    "bench-rays",
+    "bench-course",
+    "bench-about",
+    "bench-spp",
+    "bench-bounces",
+    "bench-shadows",
+    "bench-light-sampling",
+    "bench-russian-roulette",
 ];
 
-/// The non-breaking space French puts before a unit and between groups of digits.
-const NBSP: char = '\u{a0}';
+/// `table` as the edition in `language` shows it: as it is in English, in French
+/// otherwise ([`french`]).
+pub fn in_language(table: &str, language: Language) -> String {
+    match language {
+        Language::English => table.to_owned(),
+        Language::French => french(table),
+    }
+}
 
 /// The lines of `table` in French, cell by cell; code spans (stage names, options)
 /// are left as they are.
@@ -52,8 +64,10 @@ pub fn french(table: &str) -> String {
 /// One cell in French: its words, then its numbers.
 fn cell_in_french(cell: &str) -> String {
     let mut text = cell.to_owned();
-    for (english, french) in WORDS {
-        text = replace_words(&text, english, french);
+    for id in WORDS {
+        let english = catalogue(Language::English).say(id, &[]);
+        let french = catalogue(Language::French).say(id, &[]);
+        text = replace_words(&text, &english, &french);
     }
     numbers_in_french(&text)
 }
@@ -78,58 +92,45 @@ fn replace_words(text: &str, english: &str, french: &str) -> String {
 /// `1950868` as `1 950 868`, `128x128` as `128 × 128` and the speed-up `1.78x` as
 /// `1,78×`.
 fn numbers_in_french(text: &str) -> String {
-    let chars: Vec<char> = text.chars().collect();
     let mut out = String::new();
-    let mut k = 0;
-    while k < chars.len() {
-        if !chars[k].is_ascii_digit() {
-            out.push(chars[k]);
-            k += 1;
-            continue;
-        }
-        let start = k;
-        while k < chars.len() && (chars[k].is_ascii_digit() || chars[k] == '.') {
-            k += 1;
-        }
-        let number: String = chars[start..k].iter().collect();
-        out += &french_number(&number);
-        match (chars.get(k), chars.get(k + 1)) {
-            (Some('x'), Some(next)) if next.is_ascii_digit() => {
-                out += &format!("{NBSP}×{NBSP}");
-                k += 1;
-            }
-            (Some('x'), _) => {
-                out.push('×');
-                k += 1;
-            }
-            (Some(' '), Some('s')) => {
-                out.push(NBSP);
-                k += 1;
-            }
-            _ => {}
-        }
+    let mut rest = text;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_digit()) {
+        out += &rest[..start];
+        let (number, after) = number_at(&rest[start..]);
+        let say = |id: &str, arguments: &[(&str, Argument)]| {
+            catalogue(Language::French).say(id, arguments)
+        };
+        rest = if let Some((height, after)) = after
+            .strip_prefix('x')
+            .filter(|a| a.starts_with(|c: char| c.is_ascii_digit()))
+            .map(number_at)
+        {
+            out += &say("bench-size", &[("width", number), ("height", height)]);
+            after
+        } else if let Some(after) = after.strip_prefix('x') {
+            out += &say("bench-speed-up-times", &[("value", number)]);
+            after
+        } else if let Some(after) = after.strip_prefix(" s") {
+            out += &say("bench-seconds", &[("value", number)]);
+            after
+        } else {
+            out += &say("bench-number", &[("value", number)]);
+            after
+        };
     }
-    out
+    out + rest
 }
 
-/// `number` (digits, perhaps a decimal point) with a decimal comma, and its whole
-/// part in groups of three digits from four digits on.
-fn french_number(number: &str) -> String {
-    let (whole, decimals) = match number.split_once('.') {
-        Some((whole, decimals)) => (whole, Some(decimals)),
-        None => (number, None),
-    };
-    let mut grouped = String::new();
-    for (k, digit) in whole.chars().enumerate() {
-        if k > 0 && whole.len() >= 4 && (whole.len() - k).is_multiple_of(3) {
-            grouped.push(NBSP);
-        }
-        grouped.push(digit);
-    }
-    match decimals {
-        Some(decimals) => format!("{grouped},{decimals}"),
-        None => grouped,
-    }
+/// The number at the start of `text` (digits, perhaps a decimal point), with as
+/// many decimals as it was written with, and the text after it.
+fn number_at(text: &str) -> (Argument<'static>, &str) {
+    let end = text
+        .find(|c: char| !c.is_ascii_digit() && c != '.')
+        .unwrap_or(text.len());
+    let digits = &text[..end];
+    let decimals = digits.split_once('.').map_or(0, |(_, d)| d.len());
+    let value = digits.parse().unwrap_or(f64::NAN);
+    (grouped(value, decimals), &text[end..])
 }
 
 #[cfg(test)]
@@ -145,7 +146,7 @@ mod tests {
                      | `bvh` (15) | 512x512, 50 spp, 5 bounces, gamma 2.2, indirect, light sampling | 16.93 s | 156073262 | 9.22 | about 60 s | 9.53 s | 1.78x |\n";
         let expected = "| étape | réglages | code du cours | rayons | Mrayons/s | cours | `--fast` | accélération |\n\
                         |---|---|---|---|---|---|---|---|\n\
-                        | `bvh` (15) | 512\u{a0}×\u{a0}512, 50 éch./pixel, 5 rebonds, gamma 2,2, indirect, échantillonnage de la lumière | 16,93\u{a0}s | 156\u{a0}073\u{a0}262 | 9,22 | environ 60\u{a0}s | 9,53\u{a0}s | 1,78× |\n";
+                        | `bvh` (15) | 512\u{a0}×\u{a0}512, 50 éch./pixel, 5 rebonds, gamma 2,2, indirect, échantillonnage de la lumière | 16,93\u{a0}s | 156\u{202f}073\u{202f}262 | 9,22 | environ 60\u{a0}s | 9,53\u{a0}s | 1,78× |\n";
         assert_eq!(french(table), expected);
     }
 
@@ -157,7 +158,7 @@ mod tests {
             replace_words("courses, course", "course", "cours"),
             "courses, cours"
         );
-        assert_eq!(french_number("123"), "123");
-        assert_eq!(french_number("5856"), "5\u{a0}856");
+        assert_eq!(numbers_in_french("123"), "123");
+        assert_eq!(numbers_in_french("5856 and 2.50"), "5\u{202f}856 and 2,50");
     }
 }

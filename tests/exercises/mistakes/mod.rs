@@ -24,8 +24,7 @@ use crate::known::Outcome;
 use crate::say;
 
 /// A mistake: its exercise, what it gets wrong, the generated check with the
-/// mistaken function in place of the student's, and what the failure must say (in
-/// English and in French).
+/// mistaken function in place of the student's, and the rule its failure must name.
 pub struct Mistake {
     /// The exercise, such as `s1.1`.
     pub exercise: &'static str,
@@ -33,8 +32,9 @@ pub struct Mistake {
     pub what: &'static str,
     /// The generated check run on the mistaken function.
     pub run: fn() -> Outcome,
-    /// Words the failure's message must hold: `[english, french]`.
-    pub names: [&'static str; 2],
+    /// The catalogue's message (`messages/<code>/checklist.ftl`, `rule-...`) whose
+    /// words the failure's message must hold, in the checklist's language.
+    pub rule: &'static str,
 }
 
 /// A right answer written otherwise than the course's: its exercise, how it
@@ -99,12 +99,7 @@ pub fn check_session(session: u32) -> Outcome {
         })?;
     }
     for mistake in catalogue(session) {
-        let [english, french] = mistake.names;
-        let words = if crate::words::french() {
-            french
-        } else {
-            english
-        };
+        let words = crate::words::message(mistake.rule, &[]);
         match (mistake.run)() {
             Ok(()) => {
                 return Err(say!(
@@ -113,7 +108,7 @@ pub fn check_session(session: u32) -> Outcome {
                     mistake_exercise = mistake.exercise
                 ));
             }
-            Err(why) if !why.contains(words) => {
+            Err(why) if !why.contains(&words) => {
                 return Err(say!(
                     "mistakes-common-the-mistake-of-exercise-fails-without",
                     mistake_what = mistake.what,

@@ -27,10 +27,7 @@ pub const MISTAKES: &[Mistake] = &[
                 )
             })
         },
-        names: [
-            "an integer division drops the half",
-            "une division entière perd la moitié",
-        ],
+        rule: "rule-s1-1-an-integer-division-drops-the",
     },
     Mistake {
         exercise: "s1.1",
@@ -45,10 +42,7 @@ pub const MISTAKES: &[Mistake] = &[
                 )
             })
         },
-        names: [
-            "rows count from the top of the image",
-            "les lignes se comptent depuis le haut",
-        ],
+        rule: "rule-s1-1-rows-count-from-the-top",
     },
     Mistake {
         exercise: "s1.1",
@@ -59,7 +53,7 @@ pub const MISTAKES: &[Mistake] = &[
                 Vec3::new(d.x, d.y, -(c.height as Real) / (2.0 * c.fov.tan()))
             })
         },
-        names: ["H / (2 tan alpha)", "H / (2 tan alpha)"],
+        rule: "rule-s1-1-h-2-tan-alpha",
     },
     Mistake {
         exercise: "s1.2",
@@ -69,13 +63,13 @@ pub const MISTAKES: &[Mistake] = &[
                 roots(s, r).1.filter(|&t| t > 0.0)
             })
         },
-        names: ["yours is where it leaves", "la vôtre est où il sort"],
+        rule: "rule-s1-2-yours-is-where-it-leaves",
     },
     Mistake {
         exercise: "s1.2",
         what: "the near root, even behind the origin",
         run: || generated::sphere_distance(&|s, r| roots(s, r).0, &Sphere::intersect),
-        names: ["only t > 0 is a hit", "seul t > 0 est une intersection"],
+        rule: "rule-s1-2-only-t-0-is-a",
     },
     Mistake {
         exercise: "s1.2",
@@ -89,7 +83,7 @@ pub const MISTAKES: &[Mistake] = &[
                 &Sphere::intersect,
             )
         },
-        names: ["t = 0 is its own start", "t = 0 est son propre départ"],
+        rule: "rule-s1-2-t-0-is-its-own",
     },
     Mistake {
         exercise: "s1.2",
@@ -100,10 +94,7 @@ pub const MISTAKES: &[Mistake] = &[
                 &Sphere::intersect,
             )
         },
-        names: [
-            "but the far root -s.d + sqrt(Delta) is a hit",
-            "mais la racine lointaine -s.d + sqrt(Delta) est une intersection",
-        ],
+        rule: "rule-s1-2-but-the-far-root-s",
     },
     Mistake {
         exercise: "s1.2",
@@ -111,10 +102,7 @@ pub const MISTAKES: &[Mistake] = &[
         run: || {
             generated::sphere_distance(&Sphere::intersect_textbook, &Sphere::intersect_textbook)
         },
-        names: [
-            "loses R^2 in the rounding of |s|^2",
-            "perd R^2 dans l'arrondi de |s|^2",
-        ],
+        rule: "rule-s1-2-loses-r-2-in-the",
     },
     Mistake {
         exercise: "s1.3",
@@ -132,10 +120,7 @@ pub const MISTAKES: &[Mistake] = &[
                 nearest
             })
         },
-        names: [
-            "the first of the list wins",
-            "la première de la liste l'emporte",
-        ],
+        rule: "rule-s1-3-the-first-of-the-list",
     },
     Mistake {
         exercise: "s1.3",
@@ -149,10 +134,7 @@ pub const MISTAKES: &[Mistake] = &[
                     .find_map(|(i, s)| s.intersect(ray).map(|t| (t, i)))
             })
         },
-        names: [
-            "the smallest t of all the spheres met",
-            "le plus petit t de toutes les sphères",
-        ],
+        rule: "rule-s1-3-the-smallest-t-of-all",
     },
     Mistake {
         exercise: "s1.4",
@@ -162,16 +144,13 @@ pub const MISTAKES: &[Mistake] = &[
                 PI * light.lambert(point, normal, albedo)
             })
         },
-        names: ["the 1/pi is missing", "il manque le 1/pi"],
+        rule: "rule-s1-4-the-1-pi-is-missing",
     },
     Mistake {
         exercise: "s1.4",
         what: "the cosine not clamped",
         run: || lambert_with_cosine(|normal, to_light| normal.dot(to_light.normalize())),
-        names: [
-            "it gets no light, max(0, <N, l>)",
-            "elle ne reçoit rien, max(0, <N, l>)",
-        ],
+        rule: "rule-s1-4-it-gets-no-light-max",
     },
     Mistake {
         exercise: "s1.4",
@@ -183,16 +162,13 @@ pub const MISTAKES: &[Mistake] = &[
                 light.intensity / (4.0 * PI * d2) * cos * albedo / PI
             })
         },
-        names: ["not P_light / |P_light|", "et non P_source / |P_source|"],
+        rule: "rule-s1-4-not-p-light-p-light",
     },
     Mistake {
         exercise: "s1.4",
         what: "l not normalised",
         run: || lambert_with_cosine(|normal, to_light| normal.dot(to_light).max(0.0)),
-        names: [
-            "l is the unit vector to the light",
-            "l est le vecteur unitaire vers la source",
-        ],
+        rule: "rule-s1-4-l-is-the-unit-vector",
     },
 ];
 

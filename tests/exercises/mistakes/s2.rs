@@ -15,16 +15,13 @@ pub const MISTAKES: &[Mistake] = &[
                 radiance.max(0.0).powf(1.0 / gamma).min(255.0) as u8
             })
         },
-        names: [
-            "rounded to the nearest, not down",
-            "arrondi au plus proche, pas par défaut",
-        ],
+        rule: "rule-s2-1-rounded-to-the-nearest-not",
     },
     Mistake {
         exercise: "s2.1",
         what: "gamma fixed at 2.2",
         run: || generated::display(|radiance, _| raycourse::render::film::display(radiance, 2.2)),
-        names: ["use the gamma given", "utilisez le gamma donné"],
+        rule: "rule-s2-1-use-the-gamma-given",
     },
     Mistake {
         exercise: "s2.1",
@@ -39,16 +36,13 @@ pub const MISTAKES: &[Mistake] = &[
                 }
             })
         },
-        names: [
-            "an infinite radiance is the brightest there is",
-            "une luminance infinie est la plus claire qui soit",
-        ],
+        rule: "rule-s2-1-an-infinite-radiance-is-the",
     },
     Mistake {
         exercise: "s2.2",
         what: "a fixed epsilon of 1e-4",
         run: || generated::spawn(|hit, direction| hit.spawn_with_epsilon(direction, 1e-4)),
-        names: ["not a fixed epsilon", "pas un epsilon fixe"],
+        rule: "rule-s2-2-not-a-fixed-epsilon",
     },
     Mistake {
         exercise: "s2.2",
@@ -56,7 +50,7 @@ pub const MISTAKES: &[Mistake] = &[
         run: || {
             generated::spawn(|hit, direction| Ray::new(hit.spawn(hit.normal).origin, direction))
         },
-        names: ["here inwards (-N)", "ici vers l'intérieur (-N)"],
+        rule: "rule-s2-2-here-inwards-n",
     },
     Mistake {
         exercise: "s2.2",
@@ -74,7 +68,7 @@ pub const MISTAKES: &[Mistake] = &[
                 }
             })
         },
-        names: ["not against N", "pas par rapport à N"],
+        rule: "rule-s2-2-not-against-n",
     },
     Mistake {
         exercise: "s2.3",
@@ -87,10 +81,7 @@ pub const MISTAKES: &[Mistake] = &[
                 )
             })
         },
-        names: [
-            "not from the hit point",
-            "pas depuis le point d'intersection",
-        ],
+        rule: "rule-s2-3-not-from-the-hit-point",
     },
     Mistake {
         exercise: "s2.3",
@@ -107,19 +98,13 @@ pub const MISTAKES: &[Mistake] = &[
                 )
             })
         },
-        names: [
-            "divide the vector to the light by its length",
-            "divisez le vecteur vers la source par sa longueur",
-        ],
+        rule: "rule-s2-3-divide-the-vector-to-the",
     },
     Mistake {
         exercise: "s2.4",
         what: "the normal part subtracted once",
         run: || generated::reflect(|d, normal| d - d.dot(normal) * normal),
-        names: [
-            "subtracted twice, it turns around",
-            "retranchée deux fois, elle se retourne",
-        ],
+        rule: "rule-s2-4-subtracted-twice-it-turns-around",
     },
     Mistake {
         exercise: "s2.4",
@@ -133,7 +118,7 @@ pub const MISTAKES: &[Mistake] = &[
                 }
             })
         },
-        names: ["even a grazing one", "même rasant"],
+        rule: "rule-s2-4-even-a-grazing-one",
     },
     Mistake {
         exercise: "s2.5",
@@ -143,7 +128,7 @@ pub const MISTAKES: &[Mistake] = &[
                 raycourse::materials::optics::refract(d, normal, 1.0 / eta)
             })
         },
-        names: ["eta is n1 / n2", "eta vaut n1 / n2"],
+        rule: "rule-s2-5-eta-is-n1-n2",
     },
     Mistake {
         exercise: "s2.5",
@@ -155,10 +140,7 @@ pub const MISTAKES: &[Mistake] = &[
                 Some(eta * parallel - cos_t * normal)
             })
         },
-        names: [
-            "total internal reflection: eta^2",
-            "réflexion totale interne\u{a0}: eta^2",
-        ],
+        rule: "rule-s2-5-total-internal-reflection-eta-2",
     },
     Mistake {
         exercise: "s2.5",
@@ -170,10 +152,7 @@ pub const MISTAKES: &[Mistake] = &[
                 (sin2_t <= 0.999).then(|| eta * parallel - (1.0 - sin2_t).sqrt() * normal)
             })
         },
-        names: [
-            "<= 1: the ray refracts",
-            "<= 1\u{a0}: le rayon est réfracté",
-        ],
+        rule: "rule-s2-5-1-the-ray-refracts",
     },
 ];
 

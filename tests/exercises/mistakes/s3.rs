@@ -20,7 +20,7 @@ pub const MISTAKES: &[Mistake] = &[
                 Vec3::new(r * phi.cos(), r * phi.sin(), (1.0 / (1.0 + tan2)).sqrt())
             })
         },
-        names: ["0 included", "0 compris"],
+        rule: "rule-s3-1-0-included",
     },
     Mistake {
         exercise: "s3.2",
@@ -35,13 +35,13 @@ pub const MISTAKES: &[Mistake] = &[
                 }
             })
         },
-        names: ["the frame is left-handed", "le repère est indirect"],
+        rule: "rule-s3-2-the-frame-is-left-handed",
     },
     Mistake {
         exercise: "s3.2",
         what: "Frisvad's frame, dividing by 1 + n_z, with -z alone set apart",
         run: || generated::frame(frisvad),
-        names: ["near N = -z, 1 + n_z", "près de N = -z, 1 + n_z"],
+        rule: "rule-s3-2-near-n-z-1-n",
     },
     Mistake {
         exercise: "s3.3",
@@ -55,13 +55,13 @@ pub const MISTAKES: &[Mistake] = &[
                 })
             })
         },
-        names: ["hit.spawn(direction)", "hit.spawn(direction)"],
+        rule: "rule-s3-3-hit-spawn-direction",
     },
     Mistake {
         exercise: "s3.4",
         what: "sigma fixed at the stage's 0.5",
         run: || generated::gaussian(|u1, u2, _| sample_gaussian(u1, u2, 0.5)),
-        names: ["with the sigma given", "avec le sigma donné"],
+        rule: "rule-s3-4-with-the-sigma-given",
     },
 ];
 

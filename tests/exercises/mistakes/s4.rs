@@ -20,10 +20,7 @@ pub const MISTAKES: &[Mistake] = &[
                 Vec3::new(phi.cos() * sin, phi.sin() * sin, cos)
             })
         },
-        names: [
-            "sin^2(theta) = (1 - cos)(1 + cos)",
-            "sin^2(theta) = (1 - cos)(1 + cos)",
-        ],
+        rule: "rule-s4-1-sin-2-theta-1-cos",
     },
     Mistake {
         exercise: "s4.2",
@@ -37,10 +34,7 @@ pub const MISTAKES: &[Mistake] = &[
                 }
             })
         },
-        names: [
-            "use the cone's one_minus_cos_max",
-            "utilisez one_minus_cos_max",
-        ],
+        rule: "rule-s4-2-use-the-cone-s-one",
     },
     Mistake {
         exercise: "s4.3",
@@ -59,10 +53,7 @@ pub const MISTAKES: &[Mistake] = &[
                 (r * phi.cos(), r * phi.sin())
             })
         },
-        names: [
-            "not spread as the density says",
-            "pas répartis comme le dit la densité",
-        ],
+        rule: "rule-s4-3-not-spread-as-the-density",
     },
     Mistake {
         exercise: "s4.4",
@@ -76,7 +67,7 @@ pub const MISTAKES: &[Mistake] = &[
                 (origin, focus_point - origin)
             })
         },
-        names: ["starts at the eye, start", "part de l'œil, start"],
+        rule: "rule-s4-4-starts-at-the-eye-start",
     },
     Mistake {
         exercise: "s4.4",
@@ -94,7 +85,7 @@ pub const MISTAKES: &[Mistake] = &[
                 (origin, focus_point - origin)
             })
         },
-        names: ["starts in the eye's plane", "part du plan de l'œil"],
+        rule: "rule-s4-4-starts-in-the-eye-s",
     },
 ];
 

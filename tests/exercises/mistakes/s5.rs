@@ -16,10 +16,7 @@ pub const MISTAKES: &[Mistake] = &[
                 moller_trumbore(ray, [a, b, c], t_max, 1e-8, 0.0)
             })
         },
-        names: [
-            "only det = 0 means parallel",
-            "seul det = 0 signifie parallèle",
-        ],
+        rule: "rule-s5-1-only-det-0-means-parallel",
     },
     Mistake {
         exercise: "s5.1",
@@ -29,7 +26,7 @@ pub const MISTAKES: &[Mistake] = &[
                 moller_trumbore(ray, [a, b, c], t_max, 0.0, 1e-4)
             })
         },
-        names: ["only t > 0 decides", "seul t > 0 décide"],
+        rule: "rule-s5-1-only-t-0-decides",
     },
     Mistake {
         exercise: "s5.1",
@@ -40,16 +37,13 @@ pub const MISTAKES: &[Mistake] = &[
                     .filter(|h| h.beta > 0.0 && h.gamma > 0.0 && h.beta + h.gamma < 1.0)
             })
         },
-        names: [
-            "edges belong to the triangle",
-            "les arêtes appartiennent au triangle",
-        ],
+        rule: "rule-s5-1-edges-belong-to-the-triangle",
     },
     Mistake {
         exercise: "s5.2",
         what: "a miss when near >= far",
         run: || generated::slab(|bounds, ray, inv, t_max| slab(bounds, ray, inv, t_max, true)),
-        names: ["miss only when near > far", "ne manquez que si near > far"],
+        rule: "rule-s5-2-miss-only-when-near-far",
     },
 ];
 

@@ -23,19 +23,13 @@ pub const MISTAKES: &[Mistake] = &[
                 })
             })
         },
-        names: [
-            "whatever the box's size",
-            "quelle que soit la taille de la boîte",
-        ],
+        rule: "rule-s6-1-whatever-the-box-s-size",
     },
     Mistake {
         exercise: "s6.1",
         what: "every box cut along x",
         run: || generated::bvh_build(|mesh| build_cutting(mesh, |_| Some(0))),
-        names: [
-            "the box is cut across its longest side",
-            "la boîte est coupée en travers de son plus grand côté",
-        ],
+        rule: "rule-s6-1-the-box-is-cut-across",
     },
     Mistake {
         exercise: "s6.2",
@@ -45,7 +39,7 @@ pub const MISTAKES: &[Mistake] = &[
                 walk(bvh, mesh, ray, t_max, Walk::LeavesUnbounded)
             })
         },
-        names: ["closer than t_max", "plus proches que t_max"],
+        rule: "rule-s6-2-closer-than-t-max",
     },
     Mistake {
         exercise: "s6.2",
@@ -55,10 +49,7 @@ pub const MISTAKES: &[Mistake] = &[
                 walk(bvh, mesh, ray, t_max, Walk::StopsEarly)
             })
         },
-        names: [
-            "goes on with the rest of the stack",
-            "continue avec le reste de la pile",
-        ],
+        rule: "rule-s6-2-goes-on-with-the-rest",
     },
     Mistake {
         exercise: "s6.3",
@@ -66,10 +57,7 @@ pub const MISTAKES: &[Mistake] = &[
         run: || {
             generated::smooth_normal(|mesh, t, [a, b, c], g| mesh.smooth_normal(t, [a, c, b], g))
         },
-        names: [
-            "weight k goes with corner k",
-            "le poids k va avec le sommet k",
-        ],
+        rule: "rule-s6-3-weight-k-goes-with-corner",
     },
     Mistake {
         exercise: "s6.3",
@@ -82,10 +70,7 @@ pub const MISTAKES: &[Mistake] = &[
                 turned(by_number.try_normalize().unwrap_or(g), g)
             })
         },
-        names: [
-            "the vertex the triangle names",
-            "du sommet que nomme le triangle",
-        ],
+        rule: "rule-s6-3-the-vertex-the-triangle-names",
     },
     Mistake {
         exercise: "s6.3",
@@ -93,10 +78,7 @@ pub const MISTAKES: &[Mistake] = &[
         run: || {
             generated::smooth_normal(|mesh, t, w, g| turned(blend(mesh, t, w, g).normalize(), g))
         },
-        names: [
-            "falls back to the geometric normal",
-            "se rabat sur la normale géométrique",
-        ],
+        rule: "rule-s6-3-falls-back-to-the-geometric",
     },
     Mistake {
         exercise: "s6.3",
@@ -111,7 +93,7 @@ pub const MISTAKES: &[Mistake] = &[
                 }
             })
         },
-        names: ["normalise it", "normalisez-le"],
+        rule: "rule-s6-3-normalise-it",
     },
     Mistake {
         exercise: "s6.3",
@@ -121,10 +103,7 @@ pub const MISTAKES: &[Mistake] = &[
                 blend(mesh, t, w, g).try_normalize().unwrap_or(g)
             })
         },
-        names: [
-            "turned to the geometric normal's side",
-            "tournée du côté de la normale géométrique",
-        ],
+        rule: "rule-s6-3-turned-to-the-geometric-normal",
     },
 ];
 

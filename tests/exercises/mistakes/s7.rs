@@ -18,7 +18,7 @@ pub const MISTAKES: &[Mistake] = &[
                 read(t, [u * width(t), v * height(t)], FLOOR, true)
             })
         },
-        names: ["y = (1 - v) H, not v H", "y = (1 - v) H, et non v H"],
+        rule: "rule-s7-1-y-1-v-h-not",
     },
     Mistake {
         exercise: "s7.1",
@@ -28,10 +28,7 @@ pub const MISTAKES: &[Mistake] = &[
                 read(t, [u * height(t), (1.0 - v) * width(t)], FLOOR, true)
             })
         },
-        names: [
-            "yours swaps u and v, or W and H",
-            "le vôtre échange u et v, ou W et H",
-        ],
+        rule: "rule-s7-1-yours-swaps-u-and-v",
     },
     Mistake {
         exercise: "s7.1",
@@ -46,7 +43,7 @@ pub const MISTAKES: &[Mistake] = &[
                 )
             })
         },
-        names: ["towards minus infinity", "vers moins l'infini"],
+        rule: "rule-s7-1-towards-minus-infinity",
     },
     Mistake {
         exercise: "s7.1",
@@ -56,58 +53,49 @@ pub const MISTAKES: &[Mistake] = &[
                 read(t, [u * width(t), (1.0 - v) * height(t)], FLOOR, false)
             })
         },
-        names: ["by half a texel", "d'un demi-texel"],
+        rule: "rule-s7-1-by-half-a-texel",
     },
     Mistake {
         exercise: "s7.2",
         what: "the camera aimed at the origin",
         run: || generated::aim(|eye, _, up, plunge| aim(eye, Vec3::ZERO, up, plunge)),
-        names: ["not at the origin", "et non l'origine"],
+        rule: "rule-s7-2-not-at-the-origin",
     },
     Mistake {
         exercise: "s7.2",
         what: "right = up x forward",
         run: || generated::aim(|e, t, up, p| aim_with(e, t, up, p, Aim::Mirrored)),
-        names: ["which mirrors the image", "qui renverse l'image en miroir"],
+        rule: "rule-s7-2-which-mirrors-the-image",
     },
     Mistake {
         exercise: "s7.2",
         what: "back = forward",
         run: || generated::aim(|e, t, up, p| aim_with(e, t, up, p, Aim::BackForward)),
-        names: ["back = -forward", "back = -forward"],
+        rule: "rule-s7-2-back-forward",
     },
     Mistake {
         exercise: "s7.2",
         what: "the plunge taken as radians",
         run: || generated::aim(|e, t, up, p| aim_with(e, t, up, p, Aim::Radians)),
-        names: ["the plunge is in degrees", "la plongée est en degrés"],
+        rule: "rule-s7-2-the-plunge-is-in-degrees",
     },
     Mistake {
         exercise: "s7.2",
         what: "the eye raised around the origin",
         run: || generated::aim(|e, t, up, p| aim_with(e, t, up, p, Aim::AroundOrigin)),
-        names: [
-            "keeps its distance to it",
-            "reste à la même distance d'elle",
-        ],
+        rule: "rule-s7-2-keeps-its-distance-to-it",
     },
     Mistake {
         exercise: "s7.2",
         what: "right not normalised",
         run: || generated::aim(|e, t, up, p| aim_with(e, t, up, p, Aim::RightLong)),
-        names: [
-            "right = normalize(forward x up)",
-            "right = normalize(forward x up)",
-        ],
+        rule: "rule-s7-2-right-normalize-forward-x-up",
     },
     Mistake {
         exercise: "s7.2",
         what: "no frame within a hundredth of up",
         run: || generated::aim(|e, t, up, p| aim_with(e, t, up, p, Aim::NearUp)),
-        names: [
-            "only a camera looking exactly along up",
-            "seule une caméra regardant exactement le long de up",
-        ],
+        rule: "rule-s7-2-only-a-camera-looking-exactly",
     },
 ];
 
