@@ -1,8 +1,7 @@
 ### What `raycourse probe` prints: one sample of one pixel, ray by ray, in the book's
 ### notation. The columns line up in English; the symbols (O, d, t, P, N, Le, L)
-### are the book's in every language. What the renderer wrote of a bounce (its
-### kind, why the path ends) and the material are the library's words, as `--json`
-### gives them.
+### are the book's in every language. The material is written as the code's value,
+### as `--json` gives it.
 
 probe-pixel = pixel (x { NUMBER($x, useGrouping: "false") }, y { NUMBER($y, useGrouping: "false") }), sample { NUMBER($sample, useGrouping: "false") } of { NUMBER($samples, useGrouping: "false") } (from 0)
 probe-camera-ray = level { NUMBER($level, useGrouping: "false") }: the camera ray
@@ -35,6 +34,22 @@ probe-roulette = {"           "}past the bounce limit: Russian roulette let it g
 probe-bounces-left = {"           "}bounces still allowed: { NUMBER($left, useGrouping: "false") }
 probe-weight = {"           "}weight { $weight }
 probe-triple = ({ $x }, { $y }, { $z })
+
+## How the path goes on from a hit (`--json` keeps these words in English).
+probe-next-diffuse = diffuse bounce, drawn with density cos(theta) / pi
+probe-next-mirror = mirror reflection
+probe-next-total-internal-reflection = total internal reflection: past the critical angle
+probe-next-reflection = reflection
+probe-next-refraction = refraction, eta = n1 / n2 = { NUMBER($eta, minimumFractionDigits: 4, maximumFractionDigits: 4) }
+probe-next-fresnel-reflection = reflection, Fresnel's choice, with probability F
+probe-next-fresnel-refraction = refraction, eta = n1 / n2 = { NUMBER($eta, minimumFractionDigits: 4, maximumFractionDigits: 4) }, Fresnel's choice, with probability 1 - F
+
+## Why the path ends where it does (`--json` keeps these words in English).
+probe-end-leaves = the ray leaves the scene: it brings black
+probe-end-no-indirect = no indirect light in this scene: the path ends at its diffuse hit
+probe-end-roulette = past the bounce limit, Russian roulette ended the path (it goes on with probability { $survival })
+probe-end-bounce-limit = the bounce limit ({ NUMBER($bounces, useGrouping: "false") }) is reached
+probe-end-here = the path ends here
 
 ## A number in scientific notation, its mantissa as the language writes it.
 probe-number = { $value }

@@ -1,8 +1,7 @@
 ### Ce qu'affiche `raycourse probe` : un échantillon d'un pixel, rayon par rayon, dans
 ### la notation du livre. Les symboles (O, d, t, P, N, Le, L) sont ceux du livre dans
-### toutes les langues. Ce que le moteur écrit d'un rebond (sa nature, pourquoi le
-### chemin s'arrête) et le matériau sont les mots de la bibliothèque, tels que
-### `--json` les donne.
+### toutes les langues. Le matériau est écrit comme la valeur du code, tel que
+### `--json` le donne.
 
 probe-pixel = pixel (x { $x }, y { $y }), échantillon { $sample } sur { $samples } (à partir de 0)
 probe-camera-ray = niveau { $level } : le rayon de la caméra
@@ -35,6 +34,22 @@ probe-roulette = {"           "}au-delà de la limite de rebonds : la roulette 
 probe-bounces-left = {"           "}rebonds encore permis : { $left }
 probe-weight = {"           "}poids { $weight }
 probe-triple = ({ $x } ; { $y } ; { $z })
+
+## Comment le chemin continue après un impact (`--json` garde ces mots en anglais).
+probe-next-diffuse = rebond diffus, tiré avec la densité cos(theta) / pi
+probe-next-mirror = réflexion sur le miroir
+probe-next-total-internal-reflection = réflexion totale interne : au-delà de l'angle critique
+probe-next-reflection = réflexion
+probe-next-refraction = réfraction, eta = n1 / n2 = { NUMBER($eta, minimumFractionDigits: 4, maximumFractionDigits: 4) }
+probe-next-fresnel-reflection = réflexion, choisie par Fresnel avec la probabilité F
+probe-next-fresnel-refraction = réfraction, eta = n1 / n2 = { NUMBER($eta, minimumFractionDigits: 4, maximumFractionDigits: 4) }, choisie par Fresnel avec la probabilité 1 - F
+
+## Pourquoi le chemin s'arrête là (`--json` garde ces mots en anglais).
+probe-end-leaves = le rayon quitte la scène : il rapporte du noir
+probe-end-no-indirect = pas d'éclairage indirect dans cette scène : le chemin s'arrête à son impact diffus
+probe-end-roulette = au-delà de la limite de rebonds, la roulette russe a arrêté le chemin (il continue avec la probabilité { $survival })
+probe-end-bounce-limit = la limite de rebonds ({ $bounces }) est atteinte
+probe-end-here = le chemin s'arrête ici
 
 ## Un nombre en notation scientifique, sa mantisse comme l'écrit la langue.
 probe-number = { $value }

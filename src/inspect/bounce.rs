@@ -5,6 +5,7 @@ use crate::geometry::{Hit, Ray};
 use crate::inspect::path::Next;
 use crate::materials::Material;
 use crate::maths::{Colour, Vec3};
+use crate::messages::said::Said;
 use crate::scene::Scene;
 
 /// How the path went on from `hit`, met by `ray`, in `direction`, with `bounces`
@@ -21,7 +22,7 @@ pub fn next(scene: &Scene, ray: &Ray, hit: &Hit, direction: Vec3, bounces: u32) 
     };
     let roulette = survival.map_or(1.0, |s| 1.0 / s);
     let mut next = Next {
-        kind: String::new(),
+        kind: Said::new("probe-next-diffuse"),
         direction: direction.to_array(),
         cos: None,
         pdf: None,
@@ -32,7 +33,6 @@ pub fn next(scene: &Scene, ray: &Ray, hit: &Hit, direction: Vec3, bounces: u32) 
     match hit.material {
         Material::Diffuse { albedo } => {
             let cos = direction.dot(hit.facing_the_ray().normal);
-            next.kind = "diffuse bounce, drawn with density cos(theta) / pi".into();
             next.cos = Some(cos);
             // A diffuse surface sends a path on from session 3, which draws it so.
             #[cfg(feature = "s3")]
@@ -65,16 +65,18 @@ pub fn diffuse_albedo(material: &Material) -> Option<Colour> {
 }
 
 /// Why the path ends at `hit` with `bounces` allowed.
-pub fn end(scene: &Scene, hit: &Hit, bounces: u32) -> String {
+pub fn end(scene: &Scene, hit: &Hit, bounces: u32) -> Said {
     let settings = &scene.settings;
     if diffuse_albedo(&hit.material).is_some() && !settings.indirect {
-        return "no indirect light in this scene: the path ends at its diffuse hit".into();
+        return Said::new("probe-end-no-indirect");
     }
     match (bounces, settings.russian_roulette) {
-        (0, Some(survival)) => format!(
-            "past the bounce limit, Russian roulette ended the path (it goes on with probability {survival})"
-        ),
-        (0, None) => format!("the bounce limit ({}) is reached", settings.bounces),
-        _ => "the path ends here".into(),
+        (0, Some(survival)) => {
+            Said::new("probe-end-roulette").with("survival", crate::maths::to_double(survival))
+        }
+        (0, None) => {
+            Said::new("probe-end-bounce-limit").with("bounces", u64::from(settings.bounces))
+        }
+        _ => Said::new("probe-end-here"),
     }
 }

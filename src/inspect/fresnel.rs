@@ -7,6 +7,7 @@ use crate::inspect::specular::glass;
 use crate::materials::fresnel::fresnel_reflectance;
 use crate::materials::optics::{interface, refract};
 use crate::maths::{Real, Vec3};
+use crate::messages::said::Said;
 
 /// Fresnel glass of `index`: as [`glass`], and, where the ray could refract,
 /// Fresnel's reflectance `F` and whether the path took the reflected ray (with
@@ -16,9 +17,11 @@ pub fn fresnel_glass(next: &mut Next, ray: &Ray, hit: &Hit, index: Real, directi
     let (normal, eta) = interface(ray.direction, hit.normal, index);
     if refract(ray.direction, normal, eta).is_some() {
         next.fresnel = Some(fresnel_reflectance(-ray.direction.dot(normal), eta));
-        next.kind += match reflected {
-            true => ", Fresnel's choice, with probability F",
-            false => ", Fresnel's choice, with probability 1 - F",
+        next.kind = match reflected {
+            true => Said::new("probe-next-fresnel-reflection"),
+            false => {
+                Said::new("probe-next-fresnel-refraction").with("eta", crate::maths::to_double(eta))
+            }
         };
     }
 }

@@ -5,6 +5,7 @@
 use serde::Serialize;
 
 use crate::maths::Real;
+use crate::messages::said::Said;
 
 /// One sample of one pixel, followed ray by ray.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -50,7 +51,7 @@ pub struct Level {
     /// How the path goes on; `None` where it ends.
     pub next: Option<Next>,
     /// Why the path ends here, where it does.
-    pub end: Option<String>,
+    pub end: Option<Said>,
     /// The radiance `L` arriving along this ray: emitted, direct and what the rest of
     /// the path brings, weighted.
     pub arriving: [Real; 3],
@@ -111,7 +112,7 @@ pub struct ShadowRay {
 pub struct Next {
     /// What the surface does: a diffuse bounce, a mirror reflection, a refraction,
     /// a total internal reflection, or Fresnel's choice of one.
-    pub kind: String,
+    pub kind: Said,
     /// The next ray's direction.
     pub direction: [Real; 3],
     /// For a diffuse bounce: `cos(theta) = N . u'`.

@@ -163,7 +163,7 @@ fn level(
         glow_not_counted: false,
         direct: None,
         next: None,
-        end: Some("the ray leaves the scene: it brings black".into()),
+        end: Some(crate::messages::said::Said::new("probe-end-leaves")),
         arriving: [0.0; 3],
         throughput: throughput.to_array(),
         adds: [0.0; 3],

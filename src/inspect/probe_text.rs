@@ -104,7 +104,7 @@ fn write_level(lines: &mut Vec<String>, level: &Level, language: Language) {
         write_next(lines, next, level.bounces_left, language);
     }
     if let Some(end) = &level.end {
-        lines.push(say("probe-end", &[("end", end.as_str().into())]));
+        lines.push(say("probe-end", &[("end", end.say(language).into())]));
     }
     lines.push(say(
         "probe-arriving",
@@ -161,7 +161,7 @@ fn write_next(lines: &mut Vec<String>, next: &Next, bounces_left: u32, language:
     lines.push(say(
         "probe-next",
         &[
-            ("kind", next.kind.as_str().into()),
+            ("kind", next.kind.say(language).into()),
             ("direction", triple(next.direction, language).into()),
         ],
     ));

@@ -88,6 +88,14 @@ impl Said {
     }
 }
 
+/// Written in a format (`probe --json`) as its English text: a format's words stay
+/// one language, as its keys do.
+impl serde::Serialize for Said {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(&self.to_string())
+    }
+}
+
 /// The message in English, the catalogue's source.
 impl std::fmt::Display for Said {
     fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {

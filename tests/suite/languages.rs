@@ -30,6 +30,8 @@ fn probe_speaks_french_when_asked_and_english_otherwise() {
     );
     assert!(french.contains("moyenne de 1 échantillon ("), "{french}");
     assert!(french.contains("-> gamma 2,2 ->"), "{french}");
+    let end = format!("fin      pas d'éclairage indirect dans cette scène{NBSP}: le chemin");
+    assert!(french.contains(&end), "{french}");
     let from_locale = run_in_locale(&["probe", "glass", "128", "100"], dir.path(), "fr_FR.UTF-8");
     assert_eq!(text(&from_locale.stdout), french);
     let english = text(&run(&["probe", "glass", "128", "100"], dir.path()).stdout);
