@@ -33,6 +33,7 @@
 //! | module | what it does | sessions |
 //! |---|---|---|
 //! | [`maths`] | number types, random numbers, sampling | 1, 3 |
+//! | [`messages`] | what the program says, in English or French, from one catalogue of messages | 1 |
 //! | [`files`] | where a scene's meshes and textures are read: the disk, or memory in a web page | 1 |
 //! | [`materials`] | diffuse, mirror, glass, Fresnel glass, textures | 1, 2, 4, 7 |
 //! | [`geometry`] | rays, hit records, spheres, boxes, triangles | 1, 2, 5 |
@@ -46,7 +47,6 @@
 //! | `samplers` | beyond the course: better-placed samples, adaptive sampling | `beyond` |
 //! | `fast` | beyond the course: the fast engine, the same bytes in less time | `beyond` |
 //! | [`scene_file`] | scene files, their checks, the course's stages | 1 to 7 |
-//! | [`messages`] | what the program says, in English or French, from one catalogue of messages | 1 |
 //! | [`check`] | an image against the stage's: the comparison (1), a student's image graded with the likely mistake (7) | 1, 7 |
 //! | `engines` | beyond the course: which engine renders a scene | `beyond` |
 //! | `studies` | beyond the course: error against samples and time, scale sweeps, ray sets | `beyond` |
@@ -73,6 +73,8 @@
 compile_error!("raycourse needs at least the first session: enable feature s1 (or a later one)");
 
 pub mod maths;
+
+pub mod messages;
 
 pub mod files;
 
@@ -102,8 +104,6 @@ pub mod samplers;
 pub mod fast;
 
 pub mod scene_file;
-
-pub mod messages;
 
 pub mod check;
 
