@@ -33,7 +33,7 @@ use raycourse::inspect::aov::{Aov, see};
 use raycourse::lights::Light;
 use raycourse::materials::Material;
 use raycourse::maths::{Colour, Real, Vec3};
-use raycourse::messages::catalogue::{Catalogue, files};
+use raycourse::messages::catalogue::{Catalogue, with_own};
 use raycourse::messages::language::Language;
 use raycourse::messages::said::Said;
 use raycourse::render::film::display;
@@ -80,13 +80,7 @@ const BOOK: [(Language, &str); 2] = [
 
 /// The catalogue of `language`: the library's files and the book's.
 fn catalogue(language: Language) -> Catalogue {
-    let mut all = files(language).to_vec();
-    all.extend(
-        BOOK.iter()
-            .filter(|(l, _)| *l == language)
-            .map(|(_, text)| ("book.ftl", *text)),
-    );
-    Catalogue::new(language, &all)
+    with_own(language, "book.ftl", &BOOK)
 }
 
 /// A figure: rows of labelled panels, the rows one above the other.

@@ -11,6 +11,7 @@ command-cannot-start-threads = cannot start { NUMBER($threads, useGrouping: "fal
 command-cannot-write = { $file }: cannot write the file: { $why }
 command-not-a-file = { $file }: not a regular file (a folder, a device or a pipe): give the path of a file to write
 command-link-loop = { $file }: a loop of symbolic links
+command-fast-differs = { $stage }: the fast engine's image differs from the course's code's
 
 ## The closing line: `camera: 512x512, 50 spp, ... -> out/camera.png`.
 render-done = { $label }: { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3, useGrouping: "false") } s, { NUMBER($rays, useGrouping: "false") } rays, { NUMBER($speed, minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: "false") } Mrays/s, { NUMBER($threads, useGrouping: "false") } threads{ $adaptive }{ $dropped } -> { $out }
@@ -34,4 +35,5 @@ render-cost-not-fast = { $label }: `--aov cost` counts the tests of the course's
 ## `raycourse animate`: each frame's label and time, and the closing line.
 animate-frame-label = { $name } frame { NUMBER($frame, useGrouping: "false") }/{ NUMBER($frames, useGrouping: "false") }
 animate-frame = { $label }: { NUMBER($seconds, minimumFractionDigits: 2, maximumFractionDigits: 2, useGrouping: "false") } s
+animate-cannot-encode = cannot encode the animation: { $why }
 animate-done = { $name }: { NUMBER($frames, useGrouping: "false") } frames, plunge { $from } to { $to } degrees, { NUMBER($seconds, minimumFractionDigits: 1, maximumFractionDigits: 1, useGrouping: "false") } s -> { $out }

@@ -13,6 +13,7 @@ command-cannot-start-threads = impossible de démarrer { $threads } { $threads -
 command-cannot-write = { $file }: impossible d'écrire le fichier : { $why }
 command-not-a-file = { $file }: pas un fichier ordinaire (un dossier, un périphérique ou un tube) : donnez le chemin d'un fichier à écrire
 command-link-loop = { $file }: une boucle de liens symboliques
+command-fast-differs = { $stage } : l'image du moteur rapide diffère de celle du code du cours
 
 ## La ligne de fin : `camera : 512 × 512, 50 échantillons par pixel, ... -> out/camera.png`.
 render-done = { $label } : { $summary }, { NUMBER($seconds, minimumFractionDigits: 3, maximumFractionDigits: 3) } s, { NUMBER($rays) } { $rays ->
@@ -57,6 +58,7 @@ render-cost-not-fast = { $label } : `--aov cost` compte les tests des recherche
 ## `raycourse animate` : l'étiquette et le temps de chaque image, et la ligne de fin.
 animate-frame-label = { $name } image { $frame }/{ $frames }
 animate-frame = { $label } : { NUMBER($seconds, minimumFractionDigits: 2, maximumFractionDigits: 2) } s
+animate-cannot-encode = impossible d'encoder l'animation : { $why }
 animate-done = { $name } : { $frames } { $frames ->
         [one] image
        *[other] images

@@ -10,8 +10,9 @@ use clap::{ArgMatches, FromArgMatches, Parser};
 use image::codecs::gif::{GifEncoder, Repeat};
 use image::{Delay, Frame, RgbaImage};
 use raycourse::maths::Real;
+use raycourse::messages::said::Said;
 use raycourse::messages::{Argument, say};
-use raycourse::{Overrides, encode_png, find_stage, scene_file::stage_names};
+use raycourse::{Overrides, Stage, encode_png, find_stage, scene_file::stage_names};
 
 use crate::commands::Verb;
 use crate::commands::failure::Failure;
@@ -86,7 +87,6 @@ fn animate(
     options: &RenderArgs,
 ) -> Result<(), Failure> {
     let stage = find_stage(7, name).expect("clap only accepts stages of session 7");
-    let language = options.language();
     let out = options
         .out
         .clone()
@@ -99,34 +99,13 @@ fn animate(
     }
     let start = Instant::now();
     for k in 0..frames {
-        let overrides = Overrides {
-            plunge: Some(angle(k, frames, angles)),
-            ..options.overrides()
-        };
-        let job = Job::of_stage(stage, &overrides, options)?;
-        let frame = [
-            ("name", name.into()),
-            ("frame", (k + 1).into()),
-            ("frames", frames.into()),
-        ];
-        let label = say(language, "animate-frame-label", &frame);
-        let timed = timed_render(&label, &job, options)?;
-        let png = encode_png(&timed.result.film, job.scene.settings.gamma);
-        if let Some(encoder) = encoder.as_mut() {
-            let rgb = image::load_from_memory(&png).expect("the PNG was just encoded");
-            let delay = Delay::from_numer_denom_ms(100, 1);
-            let frame = Frame::from_parts(RgbaImage::from(rgb.to_rgba8()), 0, 0, delay);
-            encoder.encode_frame(frame).map_err(gif_failure)?;
-        } else {
-            let stem = out.file_stem().unwrap_or_default().to_string_lossy();
-            write(&out.with_file_name(format!("{stem}-{k:03}.png")), &png)?;
-        }
-        if !options.work.quiet {
-            let seconds = [
-                ("label", label.as_str().into()),
-                ("seconds", timed.seconds.into()),
-            ];
-            eprintln!("{}", say(language, "animate-frame", &seconds));
+        let png = frame(stage, (k, frames), angles, options)?;
+        match encoder.as_mut() {
+            Some(encoder) => add_to_gif(encoder, &png)?,
+            None => {
+                let stem = out.file_stem().unwrap_or_default().to_string_lossy();
+                write(&out.with_file_name(format!("{stem}-{k:03}.png")), &png)?;
+            }
         }
     }
     let animated = encoder.is_some();
@@ -142,8 +121,48 @@ fn animate(
         ("seconds", start.elapsed().as_secs_f64().into()),
         ("out", out.display().to_string().into()),
     ];
-    println!("{}", say(language, "animate-done", &done));
+    println!("{}", say(options.language(), "animate-done", &done));
     Ok(())
+}
+
+/// Renders frame `k` of `frames` of `stage`, its plunge angle `k / (frames - 1)` of
+/// the way through `angles`, and says how long it took (unless quiet); returns the
+/// frame as a PNG.
+fn frame(
+    stage: &Stage,
+    (k, frames): (u32, u32),
+    angles: (Real, Real),
+    options: &RenderArgs,
+) -> Result<Vec<u8>, Failure> {
+    let language = options.language();
+    let overrides = Overrides {
+        plunge: Some(angle(k, frames, angles)),
+        ..options.overrides()
+    };
+    let job = Job::of_stage(stage, &overrides, options)?;
+    let frame = [
+        ("name", stage.name.into()),
+        ("frame", (k + 1).into()),
+        ("frames", frames.into()),
+    ];
+    let label = say(language, "animate-frame-label", &frame);
+    let timed = timed_render(&label, &job, options)?;
+    if !options.work.quiet {
+        let seconds = [
+            ("label", label.as_str().into()),
+            ("seconds", timed.seconds.into()),
+        ];
+        eprintln!("{}", say(language, "animate-frame", &seconds));
+    }
+    Ok(encode_png(&timed.result.film, job.scene.settings.gamma))
+}
+
+/// Adds the frame `png` to the GIF, shown for a tenth of a second.
+fn add_to_gif(encoder: &mut GifEncoder<&mut Vec<u8>>, png: &[u8]) -> Result<(), Failure> {
+    let rgb = image::load_from_memory(png).expect("the PNG was just encoded");
+    let delay = Delay::from_numer_denom_ms(100, 1);
+    let frame = Frame::from_parts(RgbaImage::from(rgb.to_rgba8()), 0, 0, delay);
+    encoder.encode_frame(frame).map_err(gif_failure)
 }
 
 /// An angle as the command line gave it, whatever the precision of `Real`.
@@ -153,5 +172,5 @@ fn shortest(angle: Real) -> Argument<'static> {
 
 /// The failure of a GIF that could not be encoded.
 fn gif_failure(error: image::ImageError) -> Failure {
-    Failure::Machine(format!("cannot encode the animation: {error}"))
+    Failure::Broke(Said::new("animate-cannot-encode").with("why", error.to_string()))
 }

@@ -5,6 +5,7 @@
 use std::path::Path;
 
 use raycourse::check::compare::same_picture;
+use raycourse::messages::said::Said;
 use raycourse::render::png::encode_rgb8;
 use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond, stage_with_beyond};
 use raycourse::{Disk, Overrides, Render, Scene, Stage};
@@ -116,8 +117,5 @@ pub fn same_picture_by_the_fast_engine(
 /// The failure of a fast engine whose picture of `stage` is not the course's: a bug
 /// of the machine, since the two must show the same picture.
 fn differs(stage: &Stage) -> Failure {
-    Failure::Machine(format!(
-        "{}: the fast engine's image differs from the course's code's",
-        stage.name
-    ))
+    Failure::Broke(Said::new("command-fast-differs").with("stage", stage.name))
 }

@@ -18,9 +18,6 @@ pub enum Failure {
     /// A scene file that cannot be used, said in the reader's language when shown.
     #[error("{0}")]
     Scene(raycourse::SceneError),
-    /// Something the machine could not do: start threads, write a file.
-    #[error("{0}")]
-    Machine(String),
     /// A bad input, said in the reader's language when shown: a message of the
     /// catalogue with its arguments.
     #[error("{0}")]
@@ -60,9 +57,7 @@ impl Failure {
             Failure::Input(_) | Failure::Scene(_) | Failure::Refused(_) => {
                 std::process::ExitCode::from(2)
             }
-            Failure::Machine(_) | Failure::Broke(_) | Failure::Differs => {
-                std::process::ExitCode::FAILURE
-            }
+            Failure::Broke(_) | Failure::Differs => std::process::ExitCode::FAILURE,
         }
     }
 

@@ -12,6 +12,7 @@ use raycourse::fast::FastBvh;
 use raycourse::fast::lanes::Lanes;
 use raycourse::maths::{Mat3, Vec3};
 use raycourse::meshes::{Mesh, Placement, Search, read_obj};
+use raycourse::messages::said::Said;
 use raycourse::studies::rayset::{RayKind, RaySet, Timing, time_set};
 
 use crate::commands::Verb;
@@ -79,7 +80,10 @@ fn run(matches: &ArgMatches) -> Result<(), Failure> {
         let name = path.file_stem().unwrap_or_default().to_string_lossy();
         for &count in &counts {
             let timing = time_set(&mesh, &set, count, args.passes).map_err(|e| {
-                Failure::Machine(format!("cannot start {count} worker threads: {e}"))
+                let said = Said::new("command-cannot-start-threads")
+                    .with("threads", count as u64)
+                    .with("why", e.to_string());
+                Failure::Broke(said)
             })?;
             print_timing(&name, &set, &timing);
         }

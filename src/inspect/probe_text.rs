@@ -1,7 +1,7 @@
 //! The probe as text, in the book's notation: one block per ray of the path, in
 //! the reader's language (the catalogue's `probe.ftl`).
 
-use crate::inspect::path::{Direct, Level, Next, Probe};
+use crate::inspect::path::{Direct, Level, Met, Next, Probe};
 use crate::maths::Real;
 use crate::messages::catalogue::{Argument, decimals};
 use crate::messages::language::Language;
@@ -62,40 +62,7 @@ fn write_level(lines: &mut Vec<String>, level: &Level, language: Language) {
         ],
     ));
     if let Some(hit) = &level.hit {
-        lines.push(say(
-            "probe-hit",
-            &[
-                ("t", fixed(hit.t, 4)),
-                ("point", three(hit.point)),
-                ("normal", three(hit.normal)),
-            ],
-        ));
-        let face = say(
-            if hit.front_face {
-                "probe-front-face"
-            } else {
-                "probe-back-face"
-            },
-            &[],
-        );
-        lines.push(say(
-            "probe-object",
-            &[
-                (
-                    "shape",
-                    say(&format!("probe-shape-{}", hit.shape), &[]).into(),
-                ),
-                ("object", hit.object.into()),
-                ("material", hit.material.as_str().into()),
-                ("face", face.into()),
-            ],
-        ));
-        let glow = match level.glow_not_counted {
-            true => say("probe-glow-not-counted", &[]),
-            false => String::new(),
-        };
-        let emitted = [("emitted", three(level.emitted)), ("glow", glow.into())];
-        lines.push(say("probe-emitted", &emitted));
+        write_hit(lines, hit, level, language);
     }
     if let Some(direct) = &level.direct {
         write_direct(lines, direct, language);
@@ -114,6 +81,47 @@ fn write_level(lines: &mut Vec<String>, level: &Level, language: Language) {
             ("adds", three(level.adds)),
         ],
     ));
+}
+
+/// What `level`'s ray met (`hit`): where, which object of which material, and
+/// the light it emits.
+fn write_hit(lines: &mut Vec<String>, hit: &Met, level: &Level, language: Language) {
+    let say = |id: &str, arguments: &[(&str, Argument)]| say(language, id, arguments);
+    let three = |v| Argument::from(triple(v, language));
+    lines.push(say(
+        "probe-hit",
+        &[
+            ("t", fixed(hit.t, 4)),
+            ("point", three(hit.point)),
+            ("normal", three(hit.normal)),
+        ],
+    ));
+    let face = say(
+        if hit.front_face {
+            "probe-front-face"
+        } else {
+            "probe-back-face"
+        },
+        &[],
+    );
+    lines.push(say(
+        "probe-object",
+        &[
+            (
+                "shape",
+                say(&format!("probe-shape-{}", hit.shape), &[]).into(),
+            ),
+            ("object", hit.object.into()),
+            ("material", hit.material.as_str().into()),
+            ("face", face.into()),
+        ],
+    ));
+    let glow = match level.glow_not_counted {
+        true => say("probe-glow-not-counted", &[]),
+        false => String::new(),
+    };
+    let emitted = [("emitted", three(level.emitted)), ("glow", glow.into())];
+    lines.push(say("probe-emitted", &emitted));
 }
 
 /// The light source's part.

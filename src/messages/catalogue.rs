@@ -160,6 +160,19 @@ fn library(language: Language) -> &'static Catalogue {
     CATALOGUES[language as usize].get_or_init(|| Catalogue::new(language, files(language)))
 }
 
+/// The library's catalogue of `language` with a program's own file `name`, whose
+/// text in each language `own` gives (the checklist's `checklist.ftl`, the book's
+/// tools' `book.ftl`).
+pub fn with_own(language: Language, name: &str, own: &[(Language, &str)]) -> Catalogue {
+    let mut all = files(language).to_vec();
+    all.extend(
+        own.iter()
+            .filter(|(l, _)| *l == language)
+            .map(|(_, text)| (name, *text)),
+    );
+    Catalogue::new(language, &all)
+}
+
 /// The files of `language`.
 pub fn files(language: Language) -> &'static [(&'static str, &'static str)] {
     FILES

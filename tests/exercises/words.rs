@@ -3,7 +3,7 @@
 
 use std::sync::OnceLock;
 
-use raycourse::messages::catalogue::{Argument, Catalogue, decimals, files};
+use raycourse::messages::catalogue::{Argument, Catalogue, decimals, with_own};
 use raycourse::messages::language::Language;
 
 /// The language chosen once, at the start of the run.
@@ -51,14 +51,7 @@ fn catalogue() -> &'static Catalogue {
     static CATALOGUE: OnceLock<Catalogue> = OnceLock::new();
     CATALOGUE.get_or_init(|| {
         let language = LANGUAGE.get().copied().unwrap_or_default();
-        let mut all = files(language).to_vec();
-        all.extend(
-            CHECKLIST
-                .iter()
-                .filter(|(l, _)| *l == language)
-                .map(|(_, text)| ("checklist.ftl", *text)),
-        );
-        Catalogue::new(language, &all)
+        with_own(language, "checklist.ftl", &CHECKLIST)
     })
 }
 

@@ -6,8 +6,7 @@
 
 use rand::{RngExt, SeedableRng};
 use raycourse::geometry::{Ray, Sphere};
-use raycourse::materials::Material;
-use raycourse::maths::{Colour, Real, Vec3};
+use raycourse::maths::{Real, Vec3};
 
 /// Whether this build computes in double precision.
 const DOUBLE: bool = cfg!(not(feature = "f32"));
@@ -133,7 +132,9 @@ fn stable_sphere_hits_lie_on_the_surface_and_the_textbook_ones_do_not() {
 #[cfg(feature = "s2")]
 mod optics {
     use super::*;
+    use raycourse::materials::Material;
     use raycourse::materials::optics::refract;
+    use raycourse::maths::Colour;
 
     /// Whether rays `offset` radians either side of the critical angle of `index`
     /// refract (below) and are totally reflected (above), as they should.

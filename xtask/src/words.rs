@@ -4,7 +4,7 @@
 
 use std::sync::OnceLock;
 
-use raycourse::messages::catalogue::{Catalogue, files};
+use raycourse::messages::catalogue::{Catalogue, with_own};
 use raycourse::messages::language::Language;
 
 /// The book's own messages, beside the library's.
@@ -19,13 +19,5 @@ const BOOK: [(Language, &str); 2] = [
 /// The catalogue of `language`, read on first use.
 pub fn catalogue(language: Language) -> &'static Catalogue {
     static CATALOGUES: [OnceLock<Catalogue>; 2] = [OnceLock::new(), OnceLock::new()];
-    CATALOGUES[language as usize].get_or_init(|| {
-        let mut all = files(language).to_vec();
-        all.extend(
-            BOOK.iter()
-                .filter(|(l, _)| *l == language)
-                .map(|(_, text)| ("book.ftl", *text)),
-        );
-        Catalogue::new(language, &all)
-    })
+    CATALOGUES[language as usize].get_or_init(|| with_own(language, "book.ftl", &BOOK))
 }
