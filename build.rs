@@ -63,7 +63,6 @@ struct Found {
     name: String,
     title: String,
     course_time: Option<String>,
-    path: PathBuf,
 }
 
 /// The sessions among the features `features`: those named `sN`.
@@ -95,7 +94,9 @@ fn marked_exercises(manifest: &toml::Table) -> bool {
 /// Writes `stages.rs` into `OUT_DIR`: a `Stage` for every scene file of the
 /// `sessions` folders of `root` (each `sessions/sN` of `folders`), in course order
 /// (by session, then figure, the extra stages last, by name), each with its text
-/// included.
+/// included from the folder of the crate being compiled (`CARGO_MANIFEST_DIR`), not
+/// from this script's: a copy of the crate built into the same target folder shares
+/// this output, and the copy may be gone by the next build.
 fn write_stages(root: &Path, folders: &[u32]) {
     let mut found: Vec<Found> = folders.iter().flat_map(|&n| stages_of(root, n)).collect();
     assert!(!found.is_empty(), "no stage's file in sessions/sN");
@@ -104,8 +105,15 @@ fn write_stages(root: &Path, folders: &[u32]) {
     for s in &found {
         text += &format!(
             "    Stage {{ session: {}, figure: {:?}, name: {:?}, title: {:?}, course_time: {:?}, \
-             path: \"sessions/s{}/{}.toml\", source: include_str!({:?}) }},\n",
-            s.session, s.figure, s.name, s.title, s.course_time, s.session, s.name, s.path
+             path: \"sessions/s{n}/{name}.toml\", \
+             source: include_str!(concat!(env!(\"CARGO_MANIFEST_DIR\"), \"/sessions/s{n}/{name}.toml\")) }},\n",
+            s.session,
+            s.figure,
+            s.name,
+            s.title,
+            s.course_time,
+            n = s.session,
+            name = s.name,
         );
     }
     text += "]\n";
@@ -153,7 +161,6 @@ fn stages_of(root: &Path, session: u32) -> Vec<Found> {
             course_time: field("course_time")
                 .and_then(toml::Value::as_str)
                 .map(str::to_owned),
-            path: path.clone(),
         });
     }
     found
