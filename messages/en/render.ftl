@@ -31,6 +31,7 @@ render-aov-done = { $label }: { $aov } image{ $range }{ $mean } -> { $out }
 render-aov-range = , from { $low } (purple) to { $high } (yellow)
 render-aov-mean = , mean cost { $mean } tests a ray
 render-cost-not-fast = { $label }: `--aov cost` counts the tests of the course's searches, which the fast engine does not run: leave out `--fast` (or `fast = true` in the scene file)
+render-noise-map = { $label }: samples per pixel from { NUMBER($fewest, useGrouping: "false") } (black) to { NUMBER($most, useGrouping: "false") } (white) -> { $out }
 
 ## `raycourse animate`: each frame's label and time, and the closing line.
 animate-frame-label = { $name } frame { NUMBER($frame, useGrouping: "false") }/{ NUMBER($frames, useGrouping: "false") }

@@ -54,6 +54,7 @@ render-aov-done = { $label } : image { $aov ->
 render-aov-range = , de { $low } (violet) à { $high } (jaune)
 render-aov-mean = , coût moyen de { $mean } tests par rayon
 render-cost-not-fast = { $label } : `--aov cost` compte les tests des recherches du cours, que le moteur rapide ne fait pas : retirez `--fast` (ou `fast = true` du fichier de scène)
+render-noise-map = { $label } : échantillons par pixel de { $fewest } (noir) à { $most } (blanc) -> { $out }
 
 ## `raycourse animate` : l'étiquette et le temps de chaque image, et la ligne de fin.
 animate-frame-label = { $name } image { $frame }/{ $frames }

@@ -5,7 +5,9 @@
 use std::path::Path;
 
 use raycourse::check::compare::same_picture;
+use raycourse::messages::language::Language;
 use raycourse::messages::said::Said;
+use raycourse::messages::say;
 use raycourse::render::png::encode_rgb8;
 use raycourse::scene_file::beyond::{BeyondOverrides, parse_with_beyond, stage_with_beyond};
 use raycourse::{Disk, Overrides, Render, Scene, Stage};
@@ -46,18 +48,20 @@ impl BeyondArgs {
         label: &str,
         scene: &Scene,
         taken: &[u32],
+        language: Language,
     ) -> Result<(), Failure> {
         let Some(map) = &self.noise_map else {
             return Ok(());
         };
         write(map, &sample_map(taken, scene))?;
         let (fewest, most) = (taken.iter().min(), taken.iter().max());
-        println!(
-            "{label}: samples per pixel from {} (black) to {} (white) -> {}",
-            fewest.unwrap_or(&0),
-            most.unwrap_or(&0),
-            map.display()
-        );
+        let arguments = [
+            ("label", label.into()),
+            ("fewest", (*fewest.unwrap_or(&0)).into()),
+            ("most", (*most.unwrap_or(&0)).into()),
+            ("out", map.display().to_string().into()),
+        ];
+        println!("{}", say(language, "render-noise-map", &arguments));
         Ok(())
     }
 }

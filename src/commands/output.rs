@@ -109,7 +109,7 @@ pub fn render_to_file(
     let scene = &job.scene;
     if let Some(aov) = options.aov {
         #[cfg(feature = "beyond")]
-        refuse_cost_of_fast(label, aov, &job.beyond, options.language())?;
+        refuse_cost_of_fast(label, aov, &job.beyond)?;
         let name = format!("{label}-{}.png", aov.name());
         let out = options
             .out
@@ -123,7 +123,7 @@ pub fn render_to_file(
     #[cfg(feature = "beyond")]
     options
         .beyond
-        .write_noise_map(label, scene, &timed.result.samples)?;
+        .write_noise_map(label, scene, &timed.result.samples, options.language())?;
     println!(
         "{}",
         closing_line(label, job, &timed, &out, options.language())
@@ -160,7 +160,7 @@ fn closing_line(label: &str, job: &Job, timed: &Timed, out: &Path, language: Lan
     say(language, "render-done", &arguments)
 }
 
-/// Refuses `--aov cost` with the fast engine, in `language`: the image counts the tests of the
+/// Refuses `--aov cost` with the fast engine: the image counts the tests of the
 /// course's searches, and the fast engine's own searches (its hierarchy, session
 /// 5's triangles on lanes) count none, so its mean would be the spheres' alone.
 #[cfg(feature = "beyond")]
@@ -168,11 +168,10 @@ fn refuse_cost_of_fast(
     label: &str,
     aov: Aov,
     beyond: &raycourse::scene::beyond::Beyond,
-    language: Language,
 ) -> Result<(), Failure> {
     if aov == Aov::Cost && beyond.fast {
-        let why = say(language, "render-cost-not-fast", &[("label", label.into())]);
-        return Err(Failure::Input(why));
+        let said = Said::new("render-cost-not-fast").with("label", label);
+        return Err(Failure::Refused(said));
     }
     Ok(())
 }
